@@ -1,0 +1,37 @@
+# The two commands a newcomer needs: `make run` and `make test`. Each installs what is missing,
+# configures and builds Release, then does its job.
+PRESET ?= release
+BUILD_DIR := build/$(PRESET)
+MARSOKHOD := $(BUILD_DIR)/apps/marsokhod
+OUT ?= out
+
+.PHONY: all setup configure build run test bench sanitize format clean
+
+all: build
+
+setup:
+	@sh scripts/setup.sh
+
+configure: setup
+	@cmake --preset $(PRESET) >/dev/null
+
+build: configure
+	@cmake --build --preset $(PRESET)
+
+run: build
+	@sh scripts/run-default.sh $(MARSOKHOD) $(OUT)
+
+test: build
+	@ctest --preset $(PRESET)
+
+bench: build
+	@sh scripts/run-benches.sh $(BUILD_DIR) $(OUT)/bench
+
+sanitize:
+	@$(MAKE) --no-print-directory test PRESET=sanitize
+
+format:
+	@find nav world emulator occam_port apps tests benches \( -name '*.cpp' -o -name '*.hpp' \) -print0 | xargs -0 clang-format -i
+
+clean:
+	@rm -rf build

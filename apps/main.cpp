@@ -1,0 +1,3 @@
+#include "command.hpp"
+
+int main(int argc, char** argv) { return marsokhod::apps::run_command_line(argc, argv); }
