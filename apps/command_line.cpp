@@ -16,7 +16,8 @@ int run_command_line(int argc, const char* const* argv) {
   CLI::App app{"marsokhod: Marsokhod rover stereo navigation on an emulated T805 transputer "
                "network, and the synthetic Mars world to test it in.",
                "marsokhod"};
-  app.require_subcommand(1);
+  // At most one; "none" is reported below, so that an unknown word is named as such first.
+  app.require_subcommand(0, 1);
   app.set_version_flag("--version", "marsokhod 0.1.0");
   app.footer("Run 'marsokhod COMMAND --help' for the options of one command.");
 
@@ -50,6 +51,7 @@ int run_command_line(int argc, const char* const* argv) {
       return kRuntimeError;
     }
   }
+  print_error("a subcommand is required; run 'marsokhod --help' for the list");
   return kUsageError;
 }
 

@@ -21,16 +21,22 @@ enum class Eye { left, right };
 
 /// Small rotation of the right camera away from the ideal parallel geometry, in arc seconds,
 /// with the paper's names (section 2, fig. 3): pan about the camera's vertical axis, tilt
-/// about its horizontal axis, roll about its optical axis.
+/// about its horizontal axis, roll about its optical axis. Each is a right-hand rotation of the
+/// camera about its own axis (x right, y down, z forward), applied as pan * tilt * roll:
+/// positive pan turns the optical axis right, positive tilt turns it up, positive roll turns
+/// the camera clockwise as seen from behind it.
 struct Misalignment {
   double pan_arcsec = 0.0;
   double tilt_arcsec = 0.0;
   double roll_arcsec = 0.0;
+
+  friend bool operator==(const Misalignment&, const Misalignment&) = default;
 };
 
 /// The rover's attitude measured by its inclinometers. Pitch is positive nose up; roll is
 /// positive when the right side is lower than the left (right-hand rotation about the forward
-/// axis with x forward, y left, z up).
+/// axis with x forward, y left, z up). Body to level is Ry(-pitch) * Rx(roll) about the level
+/// origin, so the body's forward axis stays in the level x-z plane (x is the heading).
 struct Attitude {
   double pitch_deg = 0.0;
   double roll_deg = 0.0;
@@ -47,6 +53,8 @@ struct RigParameters {
   int width_px = 256;              ///< image width (the paper uses 128 and 256)
   int height_px = 256;             ///< image height
   Misalignment right_misalignment; ///< zero for an ideal rig
+
+  friend bool operator==(const RigParameters&, const RigParameters&) = default;
 };
 
 /// Pinhole stereo pair mounted on the rover mast.
@@ -90,7 +98,8 @@ public:
   double disparity_from_depth(double depth_m) const;
   /// Depth along the optical axis for a disparity: f * B / d; +inf for d <= 0.
   double depth_from_disparity(double disparity_px) const;
-  /// Level-frame point seen at left pixel (u, v) with disparity d (ideal rig assumed).
+  /// Level-frame point seen at left pixel (u, v) with disparity d (ideal rig assumed). A point
+  /// needs d > 0; other disparities (unmatched pixels, infinity) throw std::domain_error.
   Eigen::Vector3d point_from_disparity(double u, double v, double disparity_px,
                                        const Attitude& attitude = {}) const;
 
@@ -102,8 +111,12 @@ public:
   double ground_visible_from_m() const;
 
 private:
+  const Eigen::Isometry3d& camera_to_body(Eye eye) const;
+
   RigParameters parameters_;
   double focal_px_ = 0.0;
+  Eigen::Isometry3d left_to_body_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d right_to_body_ = Eigen::Isometry3d::Identity();
 };
 
 /// Ground (horizontal) distance from the rover centre to a level-frame point.

@@ -49,7 +49,9 @@ public:
 
   /// The w x h window whose top-left pixel is (x, y); it must lie inside this view.
   ImageView sub(int x, int y, int w, int h) const {
-    if (x < 0 || y < 0 || w < 0 || h < 0 || x + w > width_ || y + h > height_)
+    // Written as subtractions so that huge w or h cannot overflow into range.
+    if (x < 0 || y < 0 || w < 0 || h < 0 || x > width_ || y > height_ || w > width_ - x ||
+        h > height_ - y)
       throw std::out_of_range("ImageView::sub: window outside the image");
     return ImageView(data_ + y * stride_ + static_cast<std::ptrdiff_t>(x) * channels_, w, h,
                      channels_, stride_);

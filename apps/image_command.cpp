@@ -1,0 +1,235 @@
+// `marsokhod image info|convert`: look at an image file and convert between formats, with an
+// optional false-colour picture of a one-channel field.
+
+#include "command.hpp"
+
+#include "marsokhod/nav/colormap.hpp"
+#include "marsokhod/nav/image_io.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <string>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace nav = marsokhod::nav;
+
+struct InfoOptions {
+  std::string file;
+  bool json = false;
+};
+
+struct ConvertOptions {
+  std::string input;
+  std::string output;
+  bool colour = false;
+  double min = 0.0;
+  double max = 0.0;
+  CLI::Option* min_option = nullptr;
+  CLI::Option* max_option = nullptr;
+  std::string unit;
+  std::string title;
+};
+
+struct SampleStats {
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
+  double sum = 0.0;
+  std::uint64_t finite = 0;
+  std::uint64_t non_finite = 0;
+};
+
+// The container named by the file's magic bytes, which is also what read_image trusts.
+std::string format_name(const std::string& file) {
+  std::ifstream stream(file, std::ios::binary);
+  char magic[2] = {};
+  stream.read(magic, 2);
+  if (magic[0] == 'P' && magic[1] == '5')
+    return "pgm";
+  if (magic[0] == 'P' && magic[1] == '6')
+    return "ppm";
+  if (magic[0] == 'P' && (magic[1] == 'f' || magic[1] == 'F'))
+    return "pfm";
+  return "png";
+}
+
+template <class T>
+SampleStats sample_stats(const nav::Image<T>& image) {
+  SampleStats stats;
+  const T* samples = image.data();
+  for (std::size_t i = 0; i < image.size(); ++i) {
+    const double value = static_cast<double>(samples[i]);
+    if (!std::isfinite(value)) {
+      ++stats.non_finite;
+      continue;
+    }
+    stats.min = std::min(stats.min, value);
+    stats.max = std::max(stats.max, value);
+    stats.sum += value;
+    ++stats.finite;
+  }
+  return stats;
+}
+
+template <class T>
+constexpr const char* sample_type() {
+  if constexpr (std::is_same_v<T, float>)
+    return "float32";
+  else if constexpr (std::is_same_v<T, std::uint16_t>)
+    return "uint16";
+  else
+    return "uint8";
+}
+
+template <class T>
+nlohmann::json describe(const std::string& file, const nav::Image<T>& image) {
+  const SampleStats stats = sample_stats(image);
+  nlohmann::json info = {{"file", file},
+                         {"format", format_name(file)},
+                         {"width", image.width()},
+                         {"height", image.height()},
+                         {"channels", image.channels()},
+                         {"bit_depth", 8 * sizeof(T)},
+                         {"sample_type", sample_type<T>()},
+                         {"finite", stats.finite},
+                         {"non_finite", stats.non_finite}};
+  if (stats.finite == 0) {
+    info["min"] = info["max"] = info["mean"] = nullptr;
+    return info;
+  }
+  info["min"] = stats.min;
+  info["max"] = stats.max;
+  info["mean"] = stats.sum / static_cast<double>(stats.finite);
+  return info;
+}
+
+std::string text_value(const nlohmann::json& value) {
+  return value.is_null() ? "none (no finite samples)" : fmt::format("{}", value.get<double>());
+}
+
+int run_info(const InfoOptions& options) {
+  const nav::AnyImage image = nav::read_image(options.file);
+  const nlohmann::json info =
+      std::visit([&](const auto& pixels) { return describe(options.file, pixels); }, image);
+  if (options.json) {
+    fmt::print("{}\n", info.dump());
+    return kSuccess;
+  }
+  fmt::print("file:       {}\n", options.file);
+  fmt::print("format:     {}\n", info["format"].get<std::string>());
+  fmt::print("width:      {}\n", info["width"].dump());
+  fmt::print("height:     {}\n", info["height"].dump());
+  fmt::print("channels:   {}\n", info["channels"].dump());
+  fmt::print("bit depth:  {} ({})\n", info["bit_depth"].dump(),
+             info["sample_type"].get<std::string>());
+  fmt::print("min:        {}\n", text_value(info["min"]));
+  fmt::print("max:        {}\n", text_value(info["max"]));
+  fmt::print("mean:       {}\n", text_value(info["mean"]));
+  fmt::print("non-finite: {}\n", info["non_finite"].dump());
+  return kSuccess;
+}
+
+template <class T>
+nav::Image<float> to_float(const nav::Image<T>& image) {
+  nav::Image<float> field(image.width(), image.height(), image.channels());
+  for (std::size_t i = 0; i < image.size(); ++i)
+    field.data()[i] = static_cast<float>(image.data()[i]);
+  return field;
+}
+
+nav::Image<float> to_float(nav::AnyImage&& image) {
+  if (auto* floats = std::get_if<nav::Image<float>>(&image))
+    return std::move(*floats);
+  return std::visit([](const auto& pixels) { return to_float(pixels); }, image);
+}
+
+bool ends_with_pfm(const std::string& file) {
+  std::string extension = std::filesystem::path(file).extension().string();
+  for (char& c : extension)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".pfm";
+}
+
+int run_convert(const ConvertOptions& options) {
+  const bool has_min = options.min_option->count() > 0;
+  const bool has_max = options.max_option->count() > 0;
+  if ((has_min && !std::isfinite(options.min)) || (has_max && !std::isfinite(options.max)))
+    throw UsageError("--min and --max must be finite numbers");
+  if (has_min && has_max && !(options.min < options.max))
+    throw UsageError(fmt::format("--min {} must be below --max {}", options.min, options.max));
+  nav::AnyImage image = nav::read_image(options.input);
+  if (options.colour) {
+    const nav::Image<float> field = to_float(std::move(image));
+    if (field.channels() != 1)
+      throw CommandError(fmt::format("{}: --colour needs a one-channel image, found {} channels",
+                                     options.input, field.channels()));
+    nav::ColormapOptions colour;
+    if (has_min)
+      colour.min_value = static_cast<float>(options.min);
+    if (has_max)
+      colour.max_value = static_cast<float>(options.max);
+    colour.unit = options.unit;
+    colour.title = options.title;
+    nav::write_image(options.output, nav::false_colour(field, colour).view());
+  } else if (ends_with_pfm(options.output)) {
+    nav::write_image(options.output, to_float(std::move(image)).view());
+  } else {
+    std::visit([&](const auto& pixels) { nav::write_image(options.output, pixels.view()); }, image);
+  }
+  fmt::print("wrote {}\n", options.output);
+  return kSuccess;
+}
+
+CLI::App* add_info(CLI::App& image, const std::shared_ptr<InfoOptions>& options) {
+  CLI::App* info = image.add_subcommand(
+      "info", "Print the format, size, channels, bit depth and value statistics of an image.");
+  info->add_option("FILE", options->file, "PGM/PPM (P5/P6), PNG or PFM file")->required();
+  info->add_flag("--json", options->json, "Print one JSON object instead of text");
+  return info;
+}
+
+CLI::App* add_convert(CLI::App& image, const std::shared_ptr<ConvertOptions>& options) {
+  CLI::App* convert = image.add_subcommand(
+      "convert", "Convert an image; OUT's extension (.pgm .ppm .png .pfm) picks the format.");
+  convert->add_option("IN", options->input, "Input image (PGM/PPM, PNG or PFM)")->required();
+  convert->add_option("OUT", options->output, "Output image")->required();
+  CLI::Option* colour = convert->add_flag("--colour", options->colour,
+                                          "Render a one-channel image as a false-colour picture");
+  options->min_option =
+      convert->add_option("--min", options->min, "Value at the bottom of the colour scale")
+          ->needs(colour);
+  options->max_option =
+      convert->add_option("--max", options->max, "Value at the top of the colour scale")
+          ->needs(colour);
+  convert->add_option("--unit", options->unit, "Unit shown on the legend, e.g. px or m")
+      ->needs(colour);
+  convert->add_option("--title", options->title, "Title shown above the legend")->needs(colour);
+  return convert;
+}
+
+} // namespace
+
+Command make_image_command(CLI::App& parent) {
+  CLI::App* image = parent.add_subcommand("image", "Inspect and convert image files.");
+  image->require_subcommand(1);
+  auto info_options = std::make_shared<InfoOptions>();
+  auto convert_options = std::make_shared<ConvertOptions>();
+  CLI::App* info = add_info(*image, info_options);
+  CLI::App* convert = add_convert(*image, convert_options);
+  return {image, [=]() {
+            if (info->parsed())
+              return run_info(*info_options);
+            if (convert->parsed())
+              return run_convert(*convert_options);
+            return static_cast<int>(kUsageError);
+          }};
+}
+
+} // namespace marsokhod::apps

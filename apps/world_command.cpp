@@ -1,0 +1,192 @@
+#include "command.hpp"
+
+#include "marsokhod/nav/camera.hpp"
+#include "marsokhod/world/renderer.hpp"
+#include "marsokhod/world/scene.hpp"
+#include "marsokhod/world/terrain.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// Clearance the chassis needs from the terrain border, metres.
+constexpr double kBorderClearance = 2.0;
+
+struct WorldOptions {
+  std::uint64_t seed = 1;
+  std::optional<int> size;
+  fs::path out;
+  std::string light = "high-sun";
+  double rocks = world::TerrainSettings{}.rock_cover;
+  double terrain_size = world::TerrainSettings{}.size_m;
+  world::RoverPose pose;
+  double noise = world::RenderOptions{}.noise_sigma;
+  std::optional<double> pan, tilt, roll;
+  std::optional<fs::path> rig_file;
+  bool json = false;
+};
+
+double elapsed_ms(Clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+nav::RigParameters rig_parameters(const WorldOptions& o) {
+  nav::RigParameters rig =
+      o.rig_file ? nav::StereoRig::load(*o.rig_file).parameters() : nav::RigParameters{};
+  if (o.size)
+    rig.width_px = rig.height_px = *o.size;
+  rig.right_misalignment.pan_arcsec = o.pan.value_or(rig.right_misalignment.pan_arcsec);
+  rig.right_misalignment.tilt_arcsec = o.tilt.value_or(rig.right_misalignment.tilt_arcsec);
+  rig.right_misalignment.roll_arcsec = o.roll.value_or(rig.right_misalignment.roll_arcsec);
+  try {
+    return nav::StereoRig(rig).parameters();
+  } catch (const nav::RigError& e) {
+    throw UsageError(fmt::format("invalid option value: {}", e.what()));
+  }
+}
+
+void check_pose(const WorldOptions& o) {
+  const double reach = 0.5 * o.terrain_size - kBorderClearance;
+  if (std::abs(o.pose.x) > reach || std::abs(o.pose.y) > reach)
+    throw UsageError(fmt::format("--x/--y: ({}, {}) is too close to the edge of the {} m terrain; "
+                                 "use |x|, |y| <= {} m",
+                                 o.pose.x, o.pose.y, o.terrain_size, reach));
+}
+
+void print_summary(const world::SceneDescription& scene, const WorldOptions& o,
+                   const std::string& timings) {
+  const auto& p = scene.placement;
+  fmt::print("marsokhod world: seed {}, {}x{} pair, light {}, rover at ({:.2f}, {:.2f}) m heading "
+             "{:.1f} deg, pitch {:.2f} deg, roll {:.2f} deg\n",
+             o.seed, scene.rig.width_px, scene.rig.height_px, scene.lighting.name, p.pose.x,
+             p.pose.y, p.pose.heading_deg, p.attitude.pitch_deg, p.attitude.roll_deg);
+  fmt::print("ground truth: {:.1f} % of pixels valid in both views, {:.1f} % of visible pixels "
+             "on obstacles\n",
+             100.0 * scene.stats.valid_fraction(), 100.0 * scene.stats.obstacle_fraction());
+  fmt::print("wrote {} files to {}:", scene.outputs.size(), o.out.string());
+  for (const auto& [key, name] : scene.outputs)
+    fmt::print(" {}", name);
+  fmt::print("\ntimings: {}\n", timings);
+}
+
+void print_json(const world::SceneDescription& scene, const WorldOptions& o) {
+  nlohmann::json outputs = nlohmann::json::object();
+  for (const auto& [key, name] : scene.outputs)
+    outputs[key] = (o.out / name).string();
+  const nlohmann::json summary = {{"outputs", outputs},
+                                  {"seed", o.seed},
+                                  {"size", scene.rig.width_px},
+                                  {"light", scene.lighting.name},
+                                  {"attitude",
+                                   {{"pitch_deg", scene.placement.attitude.pitch_deg},
+                                    {"roll_deg", scene.placement.attitude.roll_deg}}},
+                                  {"ground_z_m", scene.placement.ground_z},
+                                  {"valid_fraction", scene.stats.valid_fraction()},
+                                  {"obstacle_fraction", scene.stats.obstacle_fraction()}};
+  fmt::print("{}\n", summary.dump(2));
+}
+
+int run_world(const WorldOptions& o) {
+  world::SceneDescription scene;
+  scene.rig = rig_parameters(o);
+  scene.lighting = world::lighting_preset(world::parse_light_preset(o.light));
+  scene.terrain.seed = o.seed;
+  scene.terrain.rock_cover = o.rocks;
+  scene.terrain.size_m = o.terrain_size;
+  scene.render.noise_sigma = o.noise;
+  scene.render.noise_seed = o.seed;
+  check_pose(o);
+  try {
+    world::create_scene_folder(o.out); // fail before the slow steps
+  } catch (const std::exception& e) {
+    throw CommandError(e.what());
+  }
+
+  fmt::print(stderr, "generating a {} m terrain at {} cm (seed {})...\n", scene.terrain.size_m,
+             100.0 * scene.terrain.cell_m, o.seed);
+  auto start = Clock::now();
+  const world::Terrain terrain = world::Terrain::generate(scene.terrain, scene.limits);
+  const double terrain_ms = elapsed_ms(start);
+  fmt::print(stderr, "lighting ({}) and acceleration structure...\n", scene.lighting.name);
+  start = Clock::now();
+  const world::LitSurface surface(terrain, scene.lighting);
+  const world::Renderer renderer(terrain);
+  const double prepare_ms = elapsed_ms(start);
+  start = Clock::now();
+  scene.placement = world::place_rover(terrain.height, o.pose);
+  const world::RenderedFrame frame = renderer.render_with_ground_truth(
+      nav::StereoRig(scene.rig), scene.placement, surface, scene.render);
+  const double render_ms = elapsed_ms(start);
+  start = Clock::now();
+  try {
+    world::write_scene(o.out, frame, scene);
+  } catch (const std::exception& e) {
+    throw CommandError(e.what());
+  }
+  const double write_ms = elapsed_ms(start);
+
+  if (o.json) {
+    print_json(scene, o);
+    return kSuccess;
+  }
+  print_summary(scene, o,
+                fmt::format("terrain {:.0f} ms, lighting and acceleration {:.0f} ms, render {:.0f} "
+                            "ms, files {:.0f} ms",
+                            terrain_ms, prepare_ms, render_ms, write_ms));
+  return kSuccess;
+}
+
+} // namespace
+
+Command make_world_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "world", "Render a synthetic Mars stereo pair with exact ground truth (disparity, range, "
+               "elevation, visibility, obstacles) into a folder.");
+  auto o = std::make_shared<WorldOptions>();
+  app->add_option("--seed", o->seed, "Seed of the terrain and the sensor noise")
+      ->capture_default_str();
+  app->add_option("--size", o->size, "Image width and height in pixels (the paper: 128 or 256)")
+      ->check(CLI::Range(16, 2048));
+  app->add_option("--out", o->out, "Output folder (created if missing)")->required();
+  app->add_option("--light", o->light, "Lighting preset")
+      ->check(CLI::IsMember({"high-sun", "overexposed", "dark-wet", "low-sun"}))
+      ->capture_default_str();
+  app->add_option("--rocks", o->rocks, "Fraction of the ground covered by rocks")
+      ->check(CLI::Range(0.0, 0.5))
+      ->capture_default_str();
+  app->add_option("--terrain-size", o->terrain_size, "Side of the square terrain, metres")
+      ->check(CLI::Range(8.0, 200.0))
+      ->capture_default_str();
+  app->add_option("--x", o->pose.x, "Rover position east, metres")->capture_default_str();
+  app->add_option("--y", o->pose.y, "Rover position north, metres")->capture_default_str();
+  app->add_option("--heading", o->pose.heading_deg,
+                  "Rover heading, degrees counter-clockwise from east")
+      ->check(CLI::Range(-360.0, 360.0))
+      ->capture_default_str();
+  app->add_option("--noise", o->noise, "Sensor noise standard deviation, grey levels")
+      ->check(CLI::Range(0.0, 64.0))
+      ->capture_default_str();
+  app->add_option("--misalign-pan", o->pan, "Right camera pan misalignment, arc seconds");
+  app->add_option("--misalign-tilt", o->tilt, "Right camera tilt misalignment, arc seconds");
+  app->add_option("--misalign-roll", o->roll, "Right camera roll misalignment, arc seconds");
+  app->add_option("--rig", o->rig_file,
+                  "Rig TOML file (docs/formats.md); --size and "
+                  "--misalign-* override its values");
+  app->add_flag("--json", o->json, "Print a machine-readable summary on stdout");
+  return {app, [o] { return run_world(*o); }};
+}
+
+} // namespace marsokhod::apps
