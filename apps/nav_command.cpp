@@ -1,0 +1,218 @@
+// `marsokhod nav LEFT RIGHT --out DIR`: one navigation cycle on a stereo pair (docs/navigation.md).
+
+#include "command.hpp"
+#include "marsokhod/nav/camera.hpp"
+#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/nav/navigation.hpp"
+#include "nav_outputs.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct NavCli {
+  fs::path left;
+  fs::path right;
+  fs::path out;
+  std::optional<fs::path> rig_file;
+  std::optional<fs::path> disparity_file;
+  std::optional<fs::path> scene_file;
+  double pitch_deg = 0.0;
+  double roll_deg = 0.0;
+  double heading_deg = 0.0;
+  double max_step_m = nav::ZoneOptions{}.max_step_m;
+  bool json = false;
+};
+
+nav::Image<std::uint8_t> read_grey(const fs::path& path) {
+  try {
+    return nav::read_gray8(path);
+  } catch (const nav::ImageError& error) {
+    throw CommandError(error.what());
+  }
+}
+
+nav::StereoRig rig_for(const NavCli& cli, int width, int height) {
+  if (!cli.rig_file) {
+    nav::RigParameters parameters;
+    parameters.width_px = width;
+    parameters.height_px = height;
+    try {
+      return nav::StereoRig(parameters);
+    } catch (const nav::RigError& error) {
+      throw CommandError(fmt::format("{}: {}x{} images are too small or too large for the rig: {}",
+                                     cli.left.string(), width, height, error.what()));
+    }
+  }
+  try {
+    nav::StereoRig rig = nav::StereoRig::load(*cli.rig_file);
+    if (rig.width() != width || rig.height() != height)
+      throw CommandError(fmt::format("{}: the rig is {}x{} but the images are {}x{}",
+                                     cli.rig_file->string(), rig.width(), rig.height(), width,
+                                     height));
+    return rig;
+  } catch (const nav::RigError& error) {
+    throw CommandError(error.what());
+  }
+}
+
+// +inf is the Middlebury "unknown"; anything else that is not a finite disparity >= 0 is an
+// error in the file, not something to guess around.
+nav::Image<float> read_disparity(const fs::path& path, int width, int height) {
+  nav::Image<float> disparity;
+  try {
+    disparity = nav::read_pfm(path);
+  } catch (const nav::ImageError& error) {
+    throw CommandError(error.what());
+  }
+  if (disparity.width() != width || disparity.height() != height)
+    throw CommandError(fmt::format("{}: the disparity map is {}x{} but the images are {}x{}",
+                                   path.string(), disparity.width(), disparity.height(), width,
+                                   height));
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float d = disparity(x, y);
+      if (std::isnan(d) || d == -std::numeric_limits<float>::infinity() || d < 0.0F)
+        throw CommandError(fmt::format("{}: pixel ({}, {}) holds {}; disparities must be >= 0, "
+                                       "or +inf where unknown",
+                                       path.string(), x, y, d));
+    }
+  return disparity;
+}
+
+// The attitude the world placed the rover in, as its scene.json records it.
+nav::Attitude scene_attitude(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw CommandError(fmt::format("{}: cannot open the scene file", path.string()));
+  try {
+    const nlohmann::json scene = nlohmann::json::parse(in);
+    const nlohmann::json& attitude = scene.at("placement").at("attitude");
+    return {attitude.at("pitch_deg").get<double>(), attitude.at("roll_deg").get<double>()};
+  } catch (const nlohmann::json::exception& error) {
+    throw CommandError(fmt::format("{}: not a scene file with placement.attitude: {}",
+                                   path.string(), error.what()));
+  }
+}
+
+void prepare_folder(const fs::path& folder) {
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error || !fs::is_directory(folder))
+    throw CommandError(fmt::format("{}: cannot create the output folder{}", folder.string(),
+                                   error ? ": " + error.message() : std::string()));
+}
+
+void print_summary(const nav::NavigationResult& result, const fs::path& out, double seconds) {
+  if (result.found()) {
+    fmt::print("path found: start {:.2f} m, fracture points [{}] m, target {:.2f} m\n",
+               result.drive.start_m, fmt::join(result.drive.fracture_m, ", "),
+               result.drive.target_m);
+    for (const nav::DriveCommand& c : result.drive.commands)
+      fmt::print("  turn {:+7.2f} deg, drive {:6.2f} m\n", c.turn_deg, c.distance_m);
+  } else {
+    fmt::print("no path: {}\n", result.reason());
+  }
+  fmt::print("zones: {} traversable, {} unknown, {} step, {} slope, {} margin pixels\n",
+             result.zones.count(nav::Zone::traversable), result.zones.count(nav::Zone::unknown),
+             result.zones.count(nav::Zone::step), result.zones.count(nav::Zone::slope),
+             result.zones.count(nav::Zone::margin));
+  fmt::print("wrote disparity, range, elevation, zones, path overlay and path.json to {} "
+             "(navigation {:.1f} ms)\n",
+             out.string(), 1000.0 * seconds);
+}
+
+int run_nav(const NavCli& cli) {
+  const nav::Image<std::uint8_t> left = read_grey(cli.left);
+  const nav::Image<std::uint8_t> right = read_grey(cli.right);
+  if (left.width() != right.width() || left.height() != right.height())
+    throw CommandError(fmt::format("{} is {}x{} but {} is {}x{}; a stereo pair has one size",
+                                   cli.left.string(), left.width(), left.height(),
+                                   cli.right.string(), right.width(), right.height()));
+  const nav::StereoRig rig = rig_for(cli, left.width(), left.height());
+  nav::NavigationOptions options;
+  options.attitude = cli.scene_file ? scene_attitude(*cli.scene_file)
+                                     : nav::Attitude{cli.pitch_deg, cli.roll_deg};
+  options.planner.heading_deg = cli.heading_deg;
+  options.zones.max_step_m = cli.max_step_m;
+  std::optional<nav::Image<float>> given;
+  if (cli.disparity_file)
+    given = read_disparity(*cli.disparity_file, left.width(), left.height());
+  prepare_folder(cli.out);
+
+  const auto start = std::chrono::steady_clock::now();
+  nav::NavigationResult result;
+  try {
+    result = given ? nav::navigate_disparity(*given, {}, rig, options)
+                   : nav::navigate(left, right, rig, options);
+  } catch (const std::invalid_argument& error) {
+    throw CommandError(fmt::format("{}: {}", cli.left.string(), error.what()));
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const nav::Image<float>& disparity = given ? *given : result.stereo.disparity;
+  const auto written = write_navigation_outputs(cli.out, left, disparity, result);
+  if (!cli.json) {
+    print_summary(result, cli.out, seconds);
+    return kSuccess;
+  }
+  nlohmann::ordered_json summary = path_json(result);
+  summary.erase("pixel_path");
+  nlohmann::ordered_json files = nlohmann::ordered_json::object();
+  for (const auto& [key, path] : written)
+    files[key] = path.string();
+  summary["outputs"] = files;
+  summary["seconds"] = seconds;
+  fmt::print("{}\n", summary.dump(2));
+  return kSuccess;
+}
+
+} // namespace
+
+Command make_nav_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "nav", "Navigate on one stereo pair: disparity, range, elevation, prohibited zones, the "
+             "safest path and drive commands, written into a folder.");
+  auto cli = std::make_shared<NavCli>();
+  app->add_option("LEFT", cli->left, "Left (reference) image: PGM, PPM or PNG")->required();
+  app->add_option("RIGHT", cli->right, "Right image of the same size")->required();
+  app->add_option("--out", cli->out, "Output folder (created if missing)")->required();
+  app->add_option("--rig", cli->rig_file,
+                  "Rig TOML file (docs/formats.md); default: the paper's rig at the images' size");
+  CLI::Option* pitch = app->add_option("--pitch", cli->pitch_deg, "Rover pitch from the inclinometer, deg, nose up +")
+      ->check(CLI::Range(-45.0, 45.0))
+      ->capture_default_str();
+  CLI::Option* roll = app->add_option("--roll", cli->roll_deg, "Rover roll, deg, right side down +")
+      ->check(CLI::Range(-45.0, 45.0))
+      ->capture_default_str();
+  app->add_option("--heading", cli->heading_deg,
+                  "Mission heading relative to the rover's, deg, counter-clockwise +")
+      ->check(CLI::Range(-180.0, 180.0))
+      ->capture_default_str();
+  app->add_option("--max-step", cli->max_step_m, "Largest step the rover climbs, m")
+      ->check(CLI::Range(0.01, 5.0))
+      ->capture_default_str();
+  app->add_option("--disparity", cli->disparity_file,
+                  "Use this disparity map (PFM, +inf unknown) instead of matching the pair");
+  app->add_option("--scene", cli->scene_file,
+                  "Take pitch and roll from a scene.json written by `marsokhod world`")
+      ->excludes(pitch)
+      ->excludes(roll);
+  app->add_flag("--json", cli->json, "Print a machine-readable summary on stdout");
+  return {app, [cli] { return run_nav(*cli); }};
+}
+
+} // namespace marsokhod::apps

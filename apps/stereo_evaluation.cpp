@@ -1,0 +1,173 @@
+#include "stereo_evaluation.hpp"
+
+#include "command.hpp"
+#include "stereo_pairs.hpp"
+
+#include "marsokhod/nav/colormap.hpp"
+#include "marsokhod/nav/disparity_metrics.hpp"
+#include "marsokhod/nav/image_io.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <variant>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const StereoEvaluationOptions& options, const StereoPairEntry& entry,
+                       const std::string& problem) {
+  throw CommandError(fmt::format("{}:{}: {}", options.index, entry.line, problem));
+}
+
+template <class T>
+void require_size(const StereoEvaluationOptions& options, const StereoPairEntry& entry,
+                  const nav::Image<T>& image, const fs::path& file) {
+  if (image.width() != entry.width || image.height() != entry.height)
+    fail(options, entry,
+         fmt::format("{} is {}x{} but the index says {}x{}", file.string(), image.width(),
+                     image.height(), entry.width, entry.height));
+}
+
+// Image errors name the file; the index line is added so the user knows which entry it was.
+template <class Read>
+auto read_for_entry(const StereoEvaluationOptions& options, const StereoPairEntry& entry,
+                    Read read) {
+  try {
+    return read();
+  } catch (const nav::ImageError& error) {
+    fail(options, entry, error.what());
+  }
+}
+
+nav::Image<std::uint8_t> read_grey(const StereoEvaluationOptions& options,
+                                   const StereoPairEntry& entry, const fs::path& file) {
+  nav::Image<std::uint8_t> image =
+      read_for_entry(options, entry, [&] { return nav::read_gray8(file); });
+  require_size(options, entry, image, file);
+  return image;
+}
+
+// value / scale, with 0 (unknown) kept as 0.
+template <class T>
+nav::Image<float> truth_disparity(const nav::Image<T>& stored, double scale) {
+  nav::Image<float> truth(stored.width(), stored.height());
+  for (std::size_t i = 0; i < stored.size(); ++i)
+    truth.data()[i] = static_cast<float>(static_cast<double>(stored.data()[i]) / scale);
+  return truth;
+}
+
+nav::Image<float> read_truth(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
+  const fs::path& file = *entry.truth;
+  const nav::AnyImage stored =
+      read_for_entry(options, entry, [&] { return nav::read_image(file); });
+  if (const auto* bytes = std::get_if<nav::Image<std::uint8_t>>(&stored);
+      bytes && entry.truth_bits == 8) {
+    require_size(options, entry, *bytes, file);
+    return truth_disparity(*bytes, entry.truth_scale);
+  }
+  if (const auto* words = std::get_if<nav::Image<std::uint16_t>>(&stored);
+      words && entry.truth_bits == 16) {
+    require_size(options, entry, *words, file);
+    return truth_disparity(*words, entry.truth_scale);
+  }
+  fail(options, entry,
+       fmt::format("{} is not a one-channel {}-bit image as gt_bits says", file.string(),
+                   entry.truth_bits));
+}
+
+void distort(nav::Image<std::uint8_t>& image, double gain, double offset) {
+  if (gain == 1.0 && offset == 0.0)
+    return;
+  for (std::size_t i = 0; i < image.size(); ++i)
+    image.data()[i] = static_cast<std::uint8_t>(
+        std::clamp(std::lround(gain * image.data()[i] + offset), 0L, 255L));
+}
+
+int search_range(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
+  const int range = entry.max_truth_disparity
+                        ? static_cast<int>(std::ceil(*entry.max_truth_disparity))
+                        : options.fallback_max_disparity;
+  if (range < 1 || range >= entry.width)
+    fail(options, entry,
+         fmt::format("search range {} px does not fit in an image {} px wide", range, entry.width));
+  return range;
+}
+
+void write_outputs(const StereoEvaluationOptions& options, const std::string& name,
+                   const nav::Image<float>& disparity) {
+  const fs::path dir = options.out_dir;
+  fs::create_directories(dir);
+  nav::write_image(dir / (name + "_disparity.pfm"), disparity.view());
+  nav::ColormapOptions colour;
+  colour.min_value = 0.0F;
+  colour.unit = "px";
+  colour.title = "disparity";
+  nav::write_image(dir / (name + "_disparity.png"),
+                   nav::false_colour(disparity.view(), colour).view());
+}
+
+PairEvaluation evaluate(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
+  const nav::Image<std::uint8_t> left = read_grey(options, entry, entry.left);
+  nav::Image<std::uint8_t> right = read_grey(options, entry, entry.right);
+  distort(right, options.right_gain, options.right_offset);
+  PairEvaluation pair;
+  pair.name = entry.name;
+  pair.width = entry.width;
+  pair.height = entry.height;
+  pair.max_disparity = search_range(options, entry);
+  nav::StereoOptions stereo = options.stereo;
+  stereo.max_disparity = pair.max_disparity;
+  const auto start = std::chrono::steady_clock::now();
+  const nav::StereoResult result = nav::match_stereo(left.view(), right.view(), stereo);
+  pair.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  pair.valid_percent = 100.0 * static_cast<double>(result.valid_pixels) /
+                       static_cast<double>(entry.width * entry.height);
+  pair.note = result.reason;
+  if (!options.out_dir.empty())
+    write_outputs(options, entry.name, result.disparity);
+  if (!entry.truth) {
+    pair.note = "no ground truth: timed only";
+    return pair;
+  }
+  const nav::Image<float> truth = read_truth(options, entry);
+  pair.bad_percent =
+      nav::score_bad_pixels(result.disparity.view(), truth.view(), {}, 1.0F).percent();
+  // The non-occlusion mask, when present, sits beside the ground truth as <name>_nonocc.pgm.
+  const fs::path mask_file = entry.truth->parent_path() / (entry.name + "_nonocc.pgm");
+  if (fs::is_regular_file(mask_file)) {
+    const nav::Image<std::uint8_t> mask = read_grey(options, entry, mask_file);
+    pair.bad_percent_nonocc =
+        nav::score_bad_pixels(result.disparity.view(), truth.view(), mask.view(), 1.0F).percent();
+  }
+  return pair;
+}
+
+} // namespace
+
+std::vector<PairEvaluation> evaluate_stereo_pairs(const StereoEvaluationOptions& options) {
+  std::vector<PairEvaluation> pairs;
+  for (const StereoPairEntry& entry : read_stereo_pairs(options.index))
+    pairs.push_back(evaluate(options, entry));
+  return pairs;
+}
+
+std::optional<double> mean_bad_percent(const std::vector<PairEvaluation>& pairs) {
+  double sum = 0.0;
+  int scored = 0;
+  for (const PairEvaluation& pair : pairs)
+    if (pair.bad_percent) {
+      sum += *pair.bad_percent;
+      ++scored;
+    }
+  if (scored == 0)
+    return std::nullopt;
+  return sum / scored;
+}
+
+} // namespace marsokhod::apps

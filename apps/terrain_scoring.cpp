@@ -1,0 +1,96 @@
+#include "terrain_scoring.hpp"
+
+#include <limits>
+#include <optional>
+
+namespace marsokhod::apps {
+namespace {
+
+std::optional<std::size_t> band_of(double range) {
+  for (std::size_t i = 0; i < kTerrainBands.size(); ++i)
+    if (range >= kTerrainBands[i].from_m && range < kTerrainBands[i].to_m)
+      return i;
+  return std::nullopt;
+}
+
+} // namespace
+
+BandCounts& BandCounts::operator+=(const BandCounts& other) {
+  obstacle_pixels += other.obstacle_pixels;
+  obstacles_prohibited += other.obstacles_prohibited;
+  free_pixels += other.free_pixels;
+  free_prohibited += other.free_prohibited;
+  return *this;
+}
+
+BandTable score_zones(const nav::ZoneMap& zones, const nav::ZoneMap& truth_zones,
+                      const world::GroundTruth& truth) {
+  BandTable table{};
+  for (int y = 0; y < zones.height(); ++y)
+    for (int x = 0; x < zones.width(); ++x) {
+      const std::optional<std::size_t> band = band_of(truth.range(x, y));
+      if (truth.valid(x, y) == 0 || !band)
+        continue;
+      BandCounts& counts = table[*band];
+      const bool prohibited = !zones.traversable(x, y);
+      if (truth.obstacles(x, y) != 0) {
+        ++counts.obstacle_pixels;
+        counts.obstacles_prohibited += prohibited ? 1 : 0;
+      } else if (truth_zones.traversable(x, y)) {
+        ++counts.free_pixels;
+        counts.free_prohibited += prohibited ? 1 : 0;
+      }
+    }
+  return table;
+}
+
+BandTable score_hazards(const nav::ZoneMap& zones, const world::GroundTruth& truth) {
+  BandTable table{};
+  for (int y = 0; y < zones.height(); ++y)
+    for (int x = 0; x < zones.width(); ++x) {
+      const std::optional<std::size_t> band = band_of(truth.range(x, y));
+      if (truth.valid(x, y) == 0 || !band)
+        continue;
+      BandCounts& counts = table[*band];
+      const bool hazard = zones.hazard(x, y);
+      if (truth.obstacles(x, y) != 0) {
+        ++counts.obstacle_pixels;
+        counts.obstacles_prohibited += hazard ? 1 : 0;
+      } else {
+        ++counts.free_pixels;
+        counts.free_prohibited += hazard ? 1 : 0;
+      }
+    }
+  return table;
+}
+
+nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
+                                const nav::ZoneOptions& options) {
+  nav::ZoneMap zones{nav::Image<std::uint8_t>(terrain.width(), terrain.height()), {}};
+  for (int y = 0; y < terrain.height(); ++y)
+    for (int x = 0; x < terrain.width(); ++x) {
+      nav::Zone zone = nav::Zone::traversable;
+      if (truth.visible(x, y) == 0 || !terrain.known(x, y))
+        zone = nav::Zone::unknown;
+      else if (truth.obstacles(x, y) != 0)
+        zone = nav::Zone::step;
+      zones.zone(x, y) = static_cast<std::uint8_t>(zone);
+    }
+  nav::add_margin(terrain, options, zones);
+  return zones;
+}
+
+bool crosses_obstacle(const nav::PathPlan& plan, const world::GroundTruth& truth) {
+  for (const nav::PixelPoint& pixel : plan.pixels)
+    if (truth.obstacles(pixel.x, pixel.y) != 0)
+      return true;
+  return false;
+}
+
+double percent(std::uint64_t part, std::uint64_t whole) {
+  if (whole == 0)
+    return std::numeric_limits<double>::quiet_NaN();
+  return 100.0 * static_cast<double>(part) / static_cast<double>(whole);
+}
+
+} // namespace marsokhod::apps

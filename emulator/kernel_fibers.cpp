@@ -1,0 +1,221 @@
+// Process contexts: fibers, direct switches between processes, giving and taking CPUs, the
+// kernel's own events (end of a compute chunk, deadline, dispatch), the process registry.
+
+#include "kernel_impl.hpp"
+
+#include "marsokhod/emulator/kernel.hpp"
+
+#include <exception>
+#include <utility>
+
+namespace marsokhod::emulator {
+
+void Kernel::Impl::switch_to(boost::context::fiber& target, boost::context::fiber& save) {
+  save_slot = &save;
+  boost::context::fiber from = std::move(target).resume();
+  // Whoever switched to us said where its own context belongs.
+  *save_slot = std::move(from);
+  after_switch();
+}
+
+void Kernel::Impl::after_switch() {
+  if (zombie != nullptr) {
+    processes.remove_and_delete(std::exchange(zombie, nullptr));
+  }
+}
+
+void Kernel::Impl::start_fiber(Process& p, std::size_t stack_bytes) {
+  auto& parked = idle[stack_bytes];
+  if (!parked.empty()) {
+    p.context_ = std::move(parked.back());
+    parked.pop_back();
+    p.context_->process = &p;
+    return;
+  }
+  p.context_ = std::make_unique<detail::Context>();
+  detail::Context* context = p.context_.get();
+  context->process = &p;
+  context->stack_bytes = stack_bytes;
+  context->fiber = boost::context::fiber(
+      std::allocator_arg, detail::PooledStack(stacks, stack_bytes),
+      [this, context](boost::context::fiber&& caller) -> boost::context::fiber {
+        // Killed before it ever ran: the fcontext backend unwinds such a fiber without
+        // entering it, the ucontext backend (sanitizer builds) enters it; return at once.
+        if (context->process->state_ == ProcessState::finished) {
+          return std::move(caller);
+        }
+        *save_slot = std::move(caller);
+        after_switch();
+        return fiber_main(*context);
+      });
+}
+
+void Kernel::Impl::run_body(Process& p) {
+  try {
+    p.body_();
+  } catch (const detail::ForcedUnwind&) {
+    throw;
+  } catch (...) {
+    if (!failure) {
+      failure = std::current_exception();
+    }
+    owner->stop_requested_ = true;
+  }
+}
+
+boost::context::fiber Kernel::Impl::fiber_main(detail::Context& context) {
+  for (;;) {
+    Process& p = *context.process;
+    run_body(p);
+    finish(p);
+    Process* next = owner->current_;
+    zombie = &p;
+    auto& parked = idle[context.stack_bytes];
+    if (parked.size() >= kMaxIdlePerSize) {
+      // Enough spare fibers: this one ends and its stack goes back to the pool.
+      save_slot = &discarded;
+      return std::move(context_of(next));
+    }
+    context.process = nullptr;
+    parked.push_back(std::move(p.context_));
+    switch_to(context_of(next), context.fiber);
+  }
+}
+
+void Kernel::Impl::grant(Cpu& cpu, Process& next) {
+  cpu.running_ = &next;
+  next.state_ = ProcessState::running;
+  next.slice_end_ = kNever;
+  const CpuTiming& timing = cpu.timing_;
+  if (next.priority_ == Priority::low && timing.timeslice > 0) {
+    // The timeslice clock ticks at multiples of the period; a low-priority process is
+    // descheduled at a chunk boundary once it has seen `slices_before_deschedule` ticks
+    // since it got the CPU. The CPU keeps the next tick so that a switch costs no division.
+    if (owner->now_ >= cpu.next_tick_) {
+      cpu.next_tick_ = (owner->now_ / timing.timeslice + 1) * timing.timeslice;
+    }
+    next.slice_end_ = cpu.next_tick_ + (timing.slices_before_deschedule - 1) * timing.timeslice;
+  }
+  cpu.busy_since_ = owner->now_;
+  if (owner->trace_ != nullptr) {
+    owner->trace_->begin_slice(cpu.track_, owner->now_, next.name_);
+  }
+}
+
+void Kernel::Impl::release(Cpu& cpu) {
+  if (cpu.running_ == nullptr) {
+    return;
+  }
+  cpu.busy_total_ += owner->now_ - cpu.busy_since_;
+  cpu.running_ = nullptr;
+  if (owner->trace_ != nullptr) {
+    owner->trace_->end_slice(cpu.track_, owner->now_);
+  }
+}
+
+// Hands the CPU of the current process to the next ready one; returns it (nullptr: idle).
+Process* Kernel::Impl::leave_cpu(Process& p) {
+  Cpu& cpu = *p.cpu_;
+  release(cpu);
+  cpu.preempt_requested_ = false;
+  Process* next = cpu.pop();
+  if (next != nullptr) {
+    grant(cpu, *next);
+  }
+  owner->current_ = next;
+  ++owner->switches_;
+  return next;
+}
+
+void Kernel::Impl::request_dispatch(Cpu& cpu, Tick at) {
+  if (cpu.dispatch_event_ == 0) {
+    cpu.dispatch_event_ =
+        owner->schedule_at(at, event_priority::dispatch, dispatch, detail::tag_of(&cpu));
+  }
+}
+
+void Kernel::Impl::finish(Process& p) {
+  p.state_ = ProcessState::finished;
+  p.body_ = nullptr;
+  --owner->live_;
+  --p.cpu_->live_count_;
+  // The hook runs while p still holds the CPU, so a parent it wakes is picked below directly.
+  if (p.exit_hook_ != nullptr) {
+    p.exit_hook_->on_exit(p);
+  }
+  leave_cpu(p);
+}
+
+void Kernel::Impl::preempt(Cpu& cpu, Process& low) {
+  if (owner->current_ == &low) {
+    // The low-priority process itself readied a high-priority one. It yields at its next
+    // kernel call (consume, block, yield, end); no simulated time passes before that, and
+    // the operation that readied the high process completes first, as an instruction would.
+    cpu.preempt_requested_ = true;
+    return;
+  }
+  low.state_ = ProcessState::ready;
+  cpu.push_front(low);
+  // Otherwise it is inside consume(): stop its compute chunk, keep the remainder.
+  if (low.compute_event_ != 0) {
+    owner->cancel(low.compute_event_);
+    low.compute_event_ = 0;
+    low.compute_left_ = low.compute_end_ - owner->now_;
+  }
+  release(cpu);
+  request_dispatch(cpu, owner->now_ + cpu.timing_.preemption_latency);
+}
+
+void Kernel::Impl::ComputeDone::on_event(std::uint64_t tag) {
+  Process& p = *detail::from_tag<Process>(tag);
+  p.compute_event_ = 0;
+  p.compute_left_ = 0;
+  kernel->current_ = &p;
+  ++kernel->switches_;
+  kernel->impl_->switch_to(p.context_->fiber, kernel->impl_->main);
+}
+
+void Kernel::Impl::Deadline::on_event(std::uint64_t tag) {
+  Process& p = *detail::from_tag<Process>(tag);
+  p.timeout_event_ = 0;
+  p.timed_out_ = true;
+  kernel->wake(p);
+}
+
+void Kernel::Impl::Dispatch::on_event(std::uint64_t tag) {
+  Cpu& cpu = *detail::from_tag<Cpu>(tag);
+  cpu.dispatch_event_ = 0;
+  if (cpu.running_ != nullptr) {
+    return;
+  }
+  Process* next = cpu.pop();
+  if (next == nullptr) {
+    return;
+  }
+  Impl& impl = *kernel->impl_;
+  impl.grant(cpu, *next);
+  kernel->current_ = next;
+  ++kernel->switches_;
+  impl.switch_to(next->context_->fiber, impl.main);
+}
+
+Kernel::Impl::Registry::~Registry() {
+  while (oldest_ != nullptr) {
+    remove_and_delete(oldest_);
+  }
+}
+
+void Kernel::Impl::Registry::add(Process* p) {
+  p->older_ = newest_;
+  p->newer_ = nullptr;
+  (newest_ != nullptr ? newest_->newer_ : oldest_) = p;
+  newest_ = p;
+}
+
+void Kernel::Impl::Registry::remove_and_delete(Process* p) {
+  (p->older_ != nullptr ? p->older_->newer_ : oldest_) = p->newer_;
+  (p->newer_ != nullptr ? p->newer_->older_ : newest_) = p->older_;
+  delete p;
+}
+
+} // namespace marsokhod::emulator

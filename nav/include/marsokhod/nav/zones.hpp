@@ -1,0 +1,90 @@
+#pragma once
+
+#include "marsokhod/nav/elevation.hpp"
+#include "marsokhod/nav/image.hpp"
+#include "marsokhod/nav/work.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory_resource>
+#include <string_view>
+
+namespace marsokhod::nav {
+
+/// Why a pixel of the left image is or is not open to the rover.
+enum class Zone : std::uint8_t {
+  traversable = 0, ///< known ground within the locomotion limits
+  unknown = 1,     ///< nothing reliable seen there: not traversable
+  step = 2,        ///< a step over the limit within the step baseline
+  slope = 3,       ///< ground steeper than the limit over the slope baseline
+  margin = 4,      ///< within the rover's half-width of a step or slope
+};
+
+inline constexpr int kZoneKinds = 5;
+
+std::string_view to_string(Zone zone);
+
+/// The rover's locomotion limits and footprint (docs/navigation.md, "Prohibited zones").
+struct ZoneOptions {
+  double max_step_m = 0.30;       ///< the paper: obstacles taller than 30 cm
+  double step_baseline_m = 0.30;  ///< a step is sought within this ground distance, each way
+  double max_slope_deg = 25.0;    ///< steepest slope the six-wheel chassis climbs
+  double slope_baseline_m = 0.60; ///< ground span over which a slope is measured
+  double rover_half_width_m = 0.50; ///< steps and slopes are grown by this, at each row's scale
+  /// Pixels the stereo matcher filled in (left-right check failed) count as unknown.
+  bool unreliable_is_unknown = true;
+  /// Ordering test of each column (0 turns it off): a pixel whose ground distance is more than
+  /// this share (plus 5 cm) beyond the median of the next rows above it, or short of the
+  /// median of the next rows below it, is unknown; terrain seen from above is never so.
+  double order_tolerance = 0.15;
+  /// Side of the ground-grid cells the visible points are binned into for the rules.
+  double cell_m = 0.10;
+  /// Points farther than this are not judged: unknown.
+  double max_range_m = 20.0;
+};
+
+/// Throws std::invalid_argument naming the first option that is not finite and positive
+/// (the half-width may be zero; the slope must be below 90 degrees).
+void validate(const ZoneOptions& options);
+
+/// The prohibited and traversable zones of the left image (the paper's fig. 4b).
+struct ZoneMap {
+  Image<std::uint8_t> zone; ///< a Zone per pixel
+  std::array<std::uint64_t, kZoneKinds> counts{};
+
+  int width() const { return zone.width(); }
+  int height() const { return zone.height(); }
+  Zone at(int x, int y) const { return static_cast<Zone>(zone(x, y)); }
+  bool traversable(int x, int y) const { return zone(x, y) == 0; }
+  /// A hazard found on the terrain itself (unknown, step or slope), the margin excluded.
+  bool hazard(int x, int y) const {
+    const Zone z = at(x, y);
+    return z != Zone::traversable && z != Zone::margin;
+  }
+  std::uint64_t count(Zone z) const { return counts[static_cast<std::size_t>(z)]; }
+};
+
+/// Marks every pixel of the terrain: unknown where the elevation is unknown, beyond
+/// max_range_m, (with unreliable_is_unknown) where `reliable` is 0 (`reliable` may be empty),
+/// or where the column's ordering test fails. The other points are binned into a ground grid of cell_m cells (no interpolation);
+/// a pixel is a step when a point within step_baseline_m along both ground axes is higher or
+/// lower than its own by more than max_step_m, a slope when the plane fitted to the cells
+/// half the slope baseline around its cell is steeper than max_slope_deg, and margin when its
+/// cell lies within rover_half_width_m of a cell holding a step or slope (unknown ground is not
+/// grown). Work is reported as Work::hazard_test per comparison made. Throws
+/// std::invalid_argument for bad options or a `reliable` mask of another size. Instantiated
+/// for NullMeter, CountingMeter and DynamicMeter.
+template <class Meter = NullMeter>
+ZoneMap find_zones(const TerrainPoints& terrain, ImageView<const std::uint8_t> reliable,
+                   const ZoneOptions& options, Meter& meter = null_meter,
+                   std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+
+/// The last stage of find_zones on its own: marks Zone::margin within rover_half_width_m of
+/// the steps and slopes already in `zones` (from any source, e.g. a ground-truth obstacle map) and
+/// recounts the zones. Same errors and instantiations as find_zones.
+template <class Meter = NullMeter>
+void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMap& zones,
+                Meter& meter = null_meter,
+                std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+
+} // namespace marsokhod::nav

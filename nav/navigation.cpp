@@ -1,0 +1,134 @@
+#include "marsokhod/nav/navigation.hpp"
+
+#include "work_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+namespace marsokhod::nav {
+namespace {
+
+/// Room for rocks nearer than the ground seen in the bottom row.
+constexpr double kNearRockAllowance = 1.25;
+/// Ground may rise towards the rover and rocks stand on it: below a column of 1.15 times the
+/// level ground's disparity the right camera is taken not to see what the left one sees.
+constexpr double kCoverageAllowance = 1.15;
+
+void check_images_fit(ImageView<const std::uint8_t> left, ImageView<const std::uint8_t> right,
+                      const StereoRig& rig) {
+  if (left.width() != right.width() || left.height() != right.height())
+    throw std::invalid_argument(fmt::format("the left image is {}x{} but the right is {}x{}",
+                                            left.width(), left.height(), right.width(),
+                                            right.height()));
+  if (left.width() != rig.width() || left.height() != rig.height())
+    throw std::invalid_argument(fmt::format("the images are {}x{} but the rig is {}x{}",
+                                            left.width(), left.height(), rig.width(),
+                                            rig.height()));
+}
+
+// The disparity of what the pair can show at all: textured pixels
+// (NavigationOptions::featureless_grey_range) below the horizon whose ground the right camera
+// sees; +inf elsewhere. Where the level ground's disparity exceeds the column (x - d < 0) the
+// ground, and anything standing on it, lies outside the right image: a match found there can
+// only be a wrong, smaller disparity that the left-right check happened to confirm
+// (kCoverageAllowance widens the strip). At or above the horizon only the sky, or the top of
+// something taller than the mast, can be seen; the sky must not become terrain.
+Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<float>& disparity,
+                               const StereoRig& rig, const NavigationOptions& options,
+                               std::pmr::memory_resource* memory) {
+  Image<float> seeable = to_image(ImageView<const float>(disparity), memory);
+  if (seeable.empty())
+    return seeable;
+  const Image<std::uint8_t> textured =
+      options.featureless_grey_range > 0
+          ? textured_pixels(left, options.featureless_grey_range, memory)
+          : Image<std::uint8_t>(left.width(), left.height(), 1, 255, memory);
+  const double last = left.width() - 1.0;
+  for (int y = 0; y < left.height(); ++y) {
+    // The level ground's disparity is affine along a row.
+    const double first_d = rig.ground_disparity(0.0, y, options.attitude);
+    const double last_d = rig.ground_disparity(last, y, options.attitude);
+    for (int x = 0; x < left.width(); ++x) {
+      const double ground_d = first_d + (last_d - first_d) * (x / std::max(last, 1.0));
+      if (textured(x, y) == 0 || ground_d <= 0.0 || x < kCoverageAllowance * ground_d)
+        seeable(x, y) = std::numeric_limits<float>::infinity();
+    }
+  }
+  return seeable;
+}
+
+NavigationResult without_path(NavigationResult result, std::string reason) {
+  result.plan.found = false;
+  result.plan.reason = std::move(reason);
+  return result;
+}
+
+} // namespace
+
+int rover_max_disparity(const StereoRig& rig, const Attitude& attitude) {
+  double nearest = 0.0;
+  const double bottom = rig.height() - 1.0;
+  for (const double u : {0.0, rig.cx(), rig.width() - 1.0})
+    nearest = std::max(nearest, rig.ground_disparity(u, bottom, attitude));
+  const int wanted = static_cast<int>(std::ceil(kNearRockAllowance * nearest));
+  return std::clamp(wanted, 1, rig.width() - 1);
+}
+
+template <class Meter>
+NavigationResult navigate_disparity(ImageView<const float> disparity,
+                                    ImageView<const std::uint8_t> reliable, const StereoRig& rig,
+                                    const NavigationOptions& options, Meter& meter,
+                                    std::pmr::memory_resource* memory) {
+  validate(options.zones);
+  validate(options.planner);
+  validate(options.drive);
+  NavigationResult result{StereoResult{Image<float>(memory), Image<std::uint8_t>(memory), 0,
+                                       std::pmr::vector<StereoLayerStats>(memory), {}},
+                          reconstruct_terrain(disparity, rig, options.attitude, meter, memory),
+                          {},
+                          {},
+                          {}};
+  result.zones = find_zones(result.terrain, reliable, options.zones, meter, memory);
+  if (result.terrain.known_pixels == 0)
+    return without_path(std::move(result), "no pixel of the disparity map gives a ground point");
+  result.plan = plan_path(result.terrain, result.zones, options.planner, meter, memory);
+  if (result.plan.found)
+    result.drive = plan_drive(result.terrain, result.plan.pixels, options.drive, memory);
+  return result;
+}
+
+template <class Meter>
+NavigationResult navigate(ImageView<const std::uint8_t> left, ImageView<const std::uint8_t> right,
+                          const StereoRig& rig, const NavigationOptions& options, Meter& meter,
+                          std::pmr::memory_resource* memory) {
+  check_images_fit(left, right, rig);
+  StereoOptions stereo_options = options.stereo;
+  if (stereo_options.max_disparity == 0)
+    stereo_options.max_disparity = rover_max_disparity(rig, options.attitude);
+  StereoResult stereo = match_stereo(left, right, stereo_options, meter, memory);
+  const Image<float> seeable = seeable_disparity(left, stereo.disparity, rig, options, memory);
+  NavigationResult result = navigate_disparity(seeable, stereo.valid, rig, options, meter, memory);
+  const std::string stereo_reason = stereo.reason;
+  result.stereo = std::move(stereo);
+  if (!stereo_reason.empty())
+    return without_path(std::move(result), "stereo: " + stereo_reason);
+  return result;
+}
+
+#define MARSOKHOD_INSTANTIATE(M)                                                                   \
+  template NavigationResult navigate<M>(ImageView<const std::uint8_t>,                            \
+                                        ImageView<const std::uint8_t>, const StereoRig&,          \
+                                        const NavigationOptions&, M&, std::pmr::memory_resource*); \
+  template NavigationResult navigate_disparity<M>(ImageView<const float>,                         \
+                                                  ImageView<const std::uint8_t>, const StereoRig&, \
+                                                  const NavigationOptions&, M&,                    \
+                                                  std::pmr::memory_resource*);
+MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
+#undef MARSOKHOD_INSTANTIATE
+
+} // namespace marsokhod::nav

@@ -1,0 +1,175 @@
+#include "marsokhod/nav/path_planner.hpp"
+
+#include "work_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+
+namespace marsokhod::nav {
+namespace {
+
+void require(bool condition, const char* name, double value, const char* rule) {
+  if (!condition)
+    throw std::invalid_argument(fmt::format("planner option {} = {}: {}", name, value, rule));
+}
+
+double wrapped_radians(double angle) {
+  return std::remainder(angle, 2.0 * std::numbers::pi);
+}
+
+// The nearest traversable pixel straight in front of the rover; among equals the one nearest
+// the heading line, then the lowest and leftmost (a fixed order, so ties are reproducible).
+std::optional<PixelPoint> find_start(const TerrainPoints& terrain, const ZoneMap& zones,
+                                     const PlannerOptions& options) {
+  std::optional<PixelPoint> best;
+  double best_range = 0.0;
+  double best_offset = 0.0;
+  for (int y = terrain.height() - 1; y >= 0; --y)
+    for (int x = 0; x < terrain.width(); ++x) {
+      if (!zones.traversable(x, y))
+        continue;
+      const double range = terrain.range(x, y);
+      const double offset = std::abs(terrain.left(x, y));
+      if (offset > options.start_lateral_m || range > options.start_max_m)
+        continue;
+      if (!best || range < best_range || (range == best_range && offset < best_offset)) {
+        best = PixelPoint{x, y};
+        best_range = range;
+        best_offset = offset;
+      }
+    }
+  return best;
+}
+
+bool in_target_band(const TerrainPoints& terrain, const PlannerOptions& options, int x, int y) {
+  const double range = terrain.range(x, y);
+  return range >= options.target_min_m && range <= options.target_max_m;
+}
+
+// The highest row holding a traversable pixel of the target band (the sweep stops there).
+std::optional<int> first_target_row(const TerrainPoints& terrain, const ZoneMap& zones,
+                                    const PlannerOptions& options, int start_row) {
+  for (int y = 0; y <= start_row; ++y)
+    for (int x = 0; x < terrain.width(); ++x)
+      if (zones.traversable(x, y) && in_target_band(terrain, options, x, y))
+        return y;
+  return std::nullopt;
+}
+
+struct Destination {
+  PixelPoint pixel;
+  double cost = 0.0;
+  double score = 0.0;
+};
+
+std::optional<Destination> choose_destination(const TerrainPoints& terrain, const RowSweep& sweep,
+                                              const PlannerOptions& options) {
+  const double heading = options.heading_deg * std::numbers::pi / 180.0;
+  std::optional<Destination> best;
+  for (int y = sweep.first_row; y <= sweep.start.y; ++y)
+    for (int x = 0; x < terrain.width(); ++x) {
+      const double cost = sweep.cost(x, y);
+      if (!std::isfinite(cost) || !in_target_band(terrain, options, x, y))
+        continue;
+      const double bearing = std::atan2(terrain.left(x, y), terrain.forward(x, y));
+      const double score =
+          cost + options.heading_weight * std::abs(wrapped_radians(bearing - heading));
+      if (!best || score < best->score)
+        best = Destination{PixelPoint{x, y}, cost, score};
+    }
+  return best;
+}
+
+template <class Meter>
+std::pmr::vector<PixelPoint> rebuild_path(const RowSweep& sweep, PixelPoint target, Meter& meter,
+                                          std::pmr::memory_resource* memory) {
+  std::pmr::vector<PixelPoint> path(memory);
+  path.reserve(static_cast<std::size_t>(sweep.start.y - target.y + 1));
+  PixelPoint at = target;
+  path.push_back(at);
+  while (at.y < sweep.start.y) {
+    at = PixelPoint{at.x + sweep.from(at.x, at.y), at.y + 1};
+    path.push_back(at);
+  }
+  detail::report(meter, Work::path_backtrack, path.size());
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+PathPlan not_found(std::string reason, std::pmr::memory_resource* memory) {
+  PathPlan plan{false, std::move(reason), {}, {}, 0.0, 0.0, std::pmr::vector<PixelPoint>(memory)};
+  return plan;
+}
+
+} // namespace
+
+void validate(const PlannerOptions& options) {
+  require(std::isfinite(options.heading_deg) && std::abs(options.heading_deg) <= 360.0,
+          "heading_deg", options.heading_deg, "must be within -360..360");
+  require(std::isfinite(options.target_min_m) && options.target_min_m > 0.0, "target_min_m",
+          options.target_min_m, "must be finite and positive");
+  require(std::isfinite(options.target_max_m) && options.target_max_m >= options.target_min_m,
+          "target_max_m", options.target_max_m, "must be finite and at least target_min_m");
+  require(std::isfinite(options.start_lateral_m) && options.start_lateral_m >= 0.0,
+          "start_lateral_m", options.start_lateral_m, "must be finite and not negative");
+  require(std::isfinite(options.start_max_m) && options.start_max_m > 0.0, "start_max_m",
+          options.start_max_m, "must be finite and positive");
+  require(std::isfinite(options.length_weight) && options.length_weight >= 0.0, "length_weight",
+          options.length_weight, "must be finite and not negative");
+  require(std::isfinite(options.flat_tolerance_m) && options.flat_tolerance_m >= 0.0,
+          "flat_tolerance_m", options.flat_tolerance_m, "must be finite and not negative");
+  require(std::isfinite(options.heading_weight) && options.heading_weight >= 0.0,
+          "heading_weight", options.heading_weight, "must be finite and not negative");
+}
+
+template <class Meter>
+PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
+                   const PlannerOptions& options, Meter& meter,
+                   std::pmr::memory_resource* memory) {
+  validate(options);
+  if (zones.width() != terrain.width() || zones.height() != terrain.height())
+    throw std::invalid_argument(fmt::format("plan_path: {}x{} zones for a {}x{} terrain",
+                                            zones.width(), zones.height(), terrain.width(),
+                                            terrain.height()));
+  const std::optional<PixelPoint> start = find_start(terrain, zones, options);
+  if (!start)
+    return not_found(fmt::format("no traversable ground within {:.2f} m straight in front of "
+                                 "the rover",
+                                 options.start_max_m),
+                     memory);
+  const std::optional<int> first_row = first_target_row(terrain, zones, options, start->y);
+  if (!first_row)
+    return not_found(fmt::format("no traversable ground {:.1f}-{:.1f} m away in view",
+                                 options.target_min_m, options.target_max_m),
+                     memory);
+  const RowSweep sweep =
+      sweep_rows(terrain, zones, *start, *first_row,
+                 EdgeWeights{options.length_weight, options.flat_tolerance_m}, meter, memory);
+  const std::optional<Destination> destination = choose_destination(terrain, sweep, options);
+  if (!destination)
+    return not_found(fmt::format("no traversable point {:.1f}-{:.1f} m away can be reached "
+                                 "from the start {:.2f} m ahead",
+                                 options.target_min_m, options.target_max_m,
+                                 terrain.range(start->x, start->y)),
+                     memory);
+  return PathPlan{true,
+                  {},
+                  *start,
+                  destination->pixel,
+                  destination->cost,
+                  destination->score,
+                  rebuild_path(sweep, destination->pixel, meter, memory)};
+}
+
+#define MARSOKHOD_INSTANTIATE(M)                                                                   \
+  template PathPlan plan_path<M>(const TerrainPoints&, const ZoneMap&, const PlannerOptions&, M&, \
+                                 std::pmr::memory_resource*);
+MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
+#undef MARSOKHOD_INSTANTIATE
+
+} // namespace marsokhod::nav

@@ -1,0 +1,89 @@
+#pragma once
+
+// Fixed-width lanes for the inner loops of the stereo matcher (private). GCC and Clang vector
+// extensions: one 16-byte register of 8 16-bit or 4 32-bit lanes, which the compiler maps to
+// SSE2 on x86-64 (or NEON, or plain scalar code where there is no vector unit). Loads and
+// stores go through memcpy, so they need no alignment and break no aliasing rule.
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+namespace marsokhod::nav::detail {
+
+using Lanes16 = std::int16_t __attribute__((vector_size(16)));
+using Bits16 = std::uint16_t __attribute__((vector_size(16)));
+using Lanes32 = std::uint32_t __attribute__((vector_size(16)));
+using Floats4 = float __attribute__((vector_size(16)));
+using Ints4 = std::int32_t __attribute__((vector_size(16)));
+inline constexpr int kLanes16 = 8;
+inline constexpr int kLanes32 = 4;
+inline constexpr int kFloatLanes = 4;
+
+template <class Lanes, class T>
+inline Lanes load_lanes(const T* from) {
+  Lanes lanes;
+  std::memcpy(&lanes, from, sizeof lanes);
+  return lanes;
+}
+
+template <class Lanes, class T>
+inline void store_lanes(T* to, Lanes lanes) {
+  std::memcpy(to, &lanes, sizeof lanes);
+}
+
+inline Lanes16 broadcast16(int value) {
+  return Lanes16{} + static_cast<std::int16_t>(value);
+}
+inline Lanes32 broadcast32(std::uint32_t value) {
+  return Lanes32{} + value;
+}
+
+inline Lanes16 lanes_min(Lanes16 a, Lanes16 b) {
+  return a < b ? a : b;
+}
+
+/// Lanes 0..3 or 4..7 as floats: each 16-bit lane is doubled into a 32-bit lane and shifted
+/// back with its sign, which SSE2 does in two instructions (a direct conversion would go lane
+/// by lane through scalar registers).
+inline Floats4 low_floats(Lanes16 v) {
+  const auto doubled = std::bit_cast<Ints4>(__builtin_shufflevector(v, v, 0, 0, 1, 1, 2, 2, 3, 3));
+  return __builtin_convertvector(doubled >> 16, Floats4);
+}
+inline Floats4 high_floats(Lanes16 v) {
+  const auto doubled = std::bit_cast<Ints4>(__builtin_shufflevector(v, v, 4, 4, 5, 5, 6, 6, 7, 7));
+  return __builtin_convertvector(doubled >> 16, Floats4);
+}
+
+/// The smallest of the 8 lanes, in three halving steps.
+inline int smallest_lane(Lanes16 v) {
+  v = lanes_min(v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3));
+  v = lanes_min(v, __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5));
+  v = lanes_min(v, __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6));
+  return v[0];
+}
+
+/// Set bits of each byte of each 16-bit lane (at most 8 per byte), by the shift-and-add tree;
+/// sums of several of these still fit a byte, and fold_bytes() finishes the count.
+inline Bits16 byte_bit_counts(Bits16 x) {
+  x = x - ((x >> 1) & 0x5555);
+  x = (x & 0x3333) + ((x >> 2) & 0x3333);
+  return (x + (x >> 4)) & 0x0F0F;
+}
+
+/// Adds the two bytes of each 16-bit lane.
+inline Bits16 fold_bytes(Bits16 x) {
+  return (x + (x >> 8)) & 0x00FF;
+}
+
+/// Set bits of each 32-bit lane (at most 32), by the shift-and-add tree.
+inline Lanes32 lane_bit_counts(Lanes32 x) {
+  x = x - ((x >> 1) & 0x55555555U);
+  x = (x & 0x33333333U) + ((x >> 2) & 0x33333333U);
+  x = (x + (x >> 4)) & 0x0F0F0F0FU;
+  x = x + (x >> 8);
+  x = x + (x >> 16);
+  return x & 0x3FU;
+}
+
+} // namespace marsokhod::nav::detail

@@ -1,0 +1,42 @@
+#pragma once
+
+// Matching of one pyramid layer (private to the stereo matcher).
+
+#include "band_layout.hpp"
+
+#include "marsokhod/nav/image.hpp"
+#include "marsokhod/nav/stereo.hpp"
+
+#include <cstdint>
+#include <memory_resource>
+
+namespace marsokhod::nav::detail {
+
+/// One layer's images, features and search limits.
+struct LayerInput {
+  ImageView<const std::uint8_t> left;
+  const Image<std::uint32_t>* left_features = nullptr;
+  const Image<std::uint32_t>* right_features = nullptr;
+  DisparityLimits limits;
+  /// The coarser layer's result, or null at the top layer (full search, ground prior).
+  const CoarseGuide* guide = nullptr;
+  /// Whether to run the left-right check; without it every pixel counts as reliable. The
+  /// coarse layers, whose disparities only seed the next layer's search, skip it, except the
+  /// top layer under the ground prior, which needs reliable disparities to bound the rows above.
+  bool check = true;
+};
+
+/// One layer's disparity (+inf where unreliable) and left-right validity.
+struct LayerOutput {
+  Image<float> disparity;
+  Image<std::uint8_t> valid;
+  std::uint64_t candidates = 0;
+  std::uint64_t valid_pixels = 0;
+};
+
+/// Matches every scan line of the layer: ranges, costs, dynamic programme, choice, check.
+template <class Meter>
+LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, Meter& meter,
+                        std::pmr::memory_resource* memory);
+
+} // namespace marsokhod::nav::detail

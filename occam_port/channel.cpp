@@ -1,0 +1,182 @@
+#include "marsokhod/occam_port/channel.hpp"
+
+#include "marsokhod/emulator/link.hpp"
+#include "marsokhod/emulator/node.hpp"
+#include "marsokhod/occam_port/alt.hpp"
+
+#include <span>
+#include <stdexcept>
+#include <utility>
+
+namespace marsokhod::occam_port {
+
+namespace {
+
+using emulator::Instruction;
+using emulator::Kernel;
+using emulator::Node;
+using emulator::Process;
+
+std::uint64_t words(std::size_t bytes) {
+  return (bytes + 3) / 4;
+}
+
+/// Cycles of `c ! x` or `c ? x` as compiled occam runs it: the operands are loaded (ldlp of
+/// the message, ldl of the channel word, ldc of the length), then in/out moves w words.
+std::uint64_t channel_cycles(const Node& node, Instruction op, std::size_t bytes) {
+  const emulator::CostTable& costs = node.cpu_spec().costs;
+  const auto cycles = [&costs](Instruction i) { return static_cast<std::uint64_t>(costs[i].base); };
+  return cycles(Instruction::ldlp) + cycles(Instruction::ldl) + cycles(Instruction::ldc) +
+         cycles(op) + words(bytes) * static_cast<std::uint64_t>(costs[op].per_unit);
+}
+
+/// The process executing a channel operation and its node.
+struct Here {
+  Process& process;
+  Node& node;
+};
+
+Here here() {
+  Kernel* kernel = Kernel::active();
+  Process* p = kernel != nullptr ? kernel->current() : nullptr;
+  if (p == nullptr || p->cpu().node() == nullptr) {
+    throw std::logic_error("channel used outside a simulated process on a node");
+  }
+  return Here{*p, *p->cpu().node()};
+}
+
+} // namespace
+
+/// Withdraws a waiting side from the channel if its process is killed while it waits, so the
+/// channel never points into a stack that is gone; and forgets the channel if the channel
+/// goes first (a channel declared outside the processes, destroyed before the kernel).
+class ChanBase::Registration {
+public:
+  explicit Registration(ChanBase& channel) : channel_(&channel) {}
+  Registration(const Registration&) = delete;
+  Registration& operator=(const Registration&) = delete;
+  ~Registration() {
+    if (channel_ != nullptr && channel_->registration_ == this) {
+      channel_->state_ = State::empty;
+      channel_->waiter_ = nullptr;
+      channel_->data_ = nullptr;
+      channel_->registration_ = nullptr;
+    }
+  }
+  void wait(State state, Process& me, void* data, std::size_t bytes) {
+    channel_->state_ = state;
+    channel_->waiter_ = &me;
+    channel_->data_ = data;
+    channel_->data_bytes_ = bytes;
+    channel_->registration_ = this;
+  }
+  void channel_gone() { channel_ = nullptr; }
+
+private:
+  ChanBase* channel_;
+};
+
+ChanBase::~ChanBase() {
+  if (registration_ != nullptr) {
+    registration_->channel_gone();
+  }
+  if (alt_ != nullptr) {
+    alt_->channel_gone(*this);
+  }
+}
+
+std::string ChanBase::describe() const {
+  return external() ? "external channel " + name_ + " (" + output_port_->name() + " -> " +
+                          input_port_->name() + ")"
+                    : "channel " + name_;
+}
+
+void ChanBase::place_on_link(emulator::LinkPort& output_port, emulator::LinkPort& input_port) {
+  output_port_ = &output_port;
+  input_port_ = &input_port;
+}
+
+void ChanBase::copy_message(void* destination, const void* source, CopyFn copy) const {
+  copy(destination, source);
+}
+
+void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
+  auto [me, node] = here();
+  node.compute_cycles(channel_cycles(node, Instruction::out, bytes));
+  if (external()) {
+    output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
+    return;
+  }
+  if (state_ == State::writer_waiting) {
+    throw std::logic_error("channel " + name_ + " has two outputting processes");
+  }
+  if (state_ == State::reader_waiting) {
+    copy_message(data_, message, copy);
+    Process* reader = std::exchange(waiter_, nullptr);
+    registration_ = nullptr;
+    state_ = State::empty;
+    node.kernel().wake(*reader);
+    return;
+  }
+  Registration registration(*this);
+  registration.wait(State::writer_waiting, me, const_cast<void*>(message), bytes);
+  if (alt_ != nullptr) {
+    alt_->guard_ready();
+  }
+  node.kernel().block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
+}
+
+void ChanBase::input(void* message, std::size_t bytes, CopyFn copy) {
+  auto [me, node] = here();
+  node.compute_cycles(channel_cycles(node, Instruction::in, bytes));
+  if (external()) {
+    input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
+    return;
+  }
+  if (state_ == State::reader_waiting) {
+    throw std::logic_error("channel " + name_ + " has two inputting processes");
+  }
+  if (state_ == State::writer_waiting) {
+    copy_message(message, data_, copy);
+    Process* writer = std::exchange(waiter_, nullptr);
+    registration_ = nullptr;
+    state_ = State::empty;
+    node.kernel().wake(*writer);
+    return;
+  }
+  Registration registration(*this);
+  registration.wait(State::reader_waiting, me, message, bytes);
+  node.kernel().block(emulator::WaitInfo{emulator::WaitKind::channel_input, this});
+}
+
+bool ChanBase::ready_for_input() const {
+  return external() ? input_port_->byte_waiting() : state_ == State::writer_waiting;
+}
+
+bool ChanBase::enable(AltState& alt) {
+  if (external()) {
+    if (input_port_->byte_waiting()) {
+      return true;
+    }
+    input_port_->set_arrival_listener([&alt] { alt.guard_ready(); });
+    return false;
+  }
+  if (state_ == State::writer_waiting) {
+    return true;
+  }
+  alt_ = &alt;
+  return false;
+}
+
+bool ChanBase::disable(AltState& alt) {
+  if (external()) {
+    input_port_->set_arrival_listener({});
+    return input_port_->byte_waiting();
+  }
+  if (alt_ == &alt) {
+    alt_ = nullptr;
+  }
+  return state_ == State::writer_waiting;
+}
+
+} // namespace marsokhod::occam_port

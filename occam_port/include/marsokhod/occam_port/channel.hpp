@@ -1,0 +1,107 @@
+#pragma once
+
+#include "marsokhod/emulator/kernel.hpp"
+
+#include <cstddef>
+#include <cstring>
+#include <string>
+#include <type_traits>
+
+namespace marsokhod::emulator {
+class LinkPort;
+}
+
+namespace marsokhod::occam_port {
+
+class AltState;
+
+/// The untyped core of an occam channel: synchronous, one-to-one, unbuffered. Whichever side
+/// arrives first waits; the second copies the message and reschedules the first, as the
+/// transputer's in/out microcode does with the channel word. Each side is charged on its node
+/// what compiled occam executes: the operand loads (ldlp, ldl, ldc: 4 cycles) and the data-book
+/// in/out (2w+19 cycles for w words). A channel placed on a link carries its
+/// messages through the link engines instead (an external channel).
+class ChanBase : public emulator::WaitTarget {
+public:
+  using CopyFn = void (*)(void* destination, const void* source);
+
+  explicit ChanBase(std::string name) : name_(std::move(name)) {}
+  ChanBase(const ChanBase&) = delete;
+  ChanBase& operator=(const ChanBase&) = delete;
+  ~ChanBase() override;
+
+  const std::string& name() const { return name_; }
+  std::string describe() const override;
+
+  bool external() const { return output_port_ != nullptr; }
+  /// An outputter is committed and waiting (or, on a link, a byte has arrived): an input
+  /// would complete without waiting. What an ALT's disc instruction tests.
+  bool ready_for_input() const;
+
+  /// `c ! message`: `bytes` is the message length the transputer would move.
+  void output(const void* message, std::size_t bytes, CopyFn copy);
+  /// `c ? message`.
+  void input(void* message, std::size_t bytes, CopyFn copy);
+
+  // ALT support (enbc/disc): ready means an outputter is committed to this channel.
+  bool enable(AltState& alt);
+  bool disable(AltState& alt);
+
+protected:
+  /// Makes this an external channel: the outputting process (on one node) sends through
+  /// `output_port`, the inputting process (on the other node) receives from `input_port`;
+  /// the two are the ends of one link. Only for messages that are plain bytes.
+  void place_on_link(emulator::LinkPort& output_port, emulator::LinkPort& input_port);
+
+private:
+  enum class State : unsigned char { empty, reader_waiting, writer_waiting };
+  class Registration;
+  void copy_message(void* destination, const void* source, CopyFn copy) const;
+
+  std::string name_;
+  State state_ = State::empty;
+  emulator::Process* waiter_ = nullptr;
+  void* data_ = nullptr; // the waiting side's message
+  std::size_t data_bytes_ = 0;
+  AltState* alt_ = nullptr;              // an ALT that enabled this channel and may be waiting
+  Registration* registration_ = nullptr; // the waiting side's, on its stack
+  emulator::LinkPort* output_port_ = nullptr;
+  emulator::LinkPort* input_port_ = nullptr;
+};
+
+/// Bytes a value occupies on a channel (the length the transputer's in/out would copy).
+template <typename T>
+std::size_t message_bytes(const T&) {
+  return sizeof(T);
+}
+
+/// An occam channel carrying values of T: `c << x` is `c ! x`, `c >> x` is `c ? x`.
+template <typename T>
+class Chan : public ChanBase {
+  static_assert(std::is_copy_assignable_v<T>, "a channel copies its messages");
+
+public:
+  explicit Chan(std::string name) : ChanBase(std::move(name)) {}
+
+  Chan& operator<<(const T& value) {
+    output(&value, message_bytes(value), &copy);
+    return *this;
+  }
+  Chan& operator>>(T& value) {
+    input(&value, message_bytes(value), &copy);
+    return *this;
+  }
+
+  /// Carries the channel over a link (see ChanBase); the bytes of T travel as they are.
+  void place_on_link(emulator::LinkPort& output_port, emulator::LinkPort& input_port) {
+    static_assert(std::is_trivially_copyable_v<T>, "only plain bytes can cross a link");
+    ChanBase::place_on_link(output_port, input_port);
+  }
+
+private:
+  static void copy(void* destination, const void* source) {
+    *static_cast<T*>(destination) = *static_cast<const T*>(source);
+  }
+};
+
+} // namespace marsokhod::occam_port

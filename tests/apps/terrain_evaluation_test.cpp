@@ -1,0 +1,104 @@
+#include "support/run_marsokhod.hpp"
+#include "terrain_scoring.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace marsokhod::apps {
+namespace {
+
+using marsokhod::testing::run_marsokhod;
+
+// A 4 x 1 strip: every pixel seen by both cameras, 5 m away (band 2-6 m).
+world::GroundTruth strip_truth() {
+  world::GroundTruth truth = world::GroundTruth::unknown(4, 1);
+  for (int x = 0; x < 4; ++x) {
+    truth.range(x, 0) = 5.0F;
+    truth.visible(x, 0) = truth.valid(x, 0) = 255;
+  }
+  return truth;
+}
+
+nav::ZoneMap strip_zones(std::initializer_list<nav::Zone> zones) {
+  nav::ZoneMap map{nav::Image<std::uint8_t>(4, 1), {}};
+  int x = 0;
+  for (const nav::Zone z : zones)
+    map.zone(x++, 0) = static_cast<std::uint8_t>(z);
+  return map;
+}
+
+TEST(ScoreZones, CountsObstaclesProhibitedAndFreeGroundProhibitedByBand) {
+  world::GroundTruth truth = strip_truth();
+  truth.obstacles(0, 0) = truth.obstacles(1, 0) = 255;
+  // Pixel 0: an obstacle we prohibit by its margin; 1: an obstacle we miss; 2: free ground we
+  // prohibit; 3: free ground we leave open.
+  const nav::ZoneMap ours =
+      strip_zones({nav::Zone::margin, nav::Zone::traversable, nav::Zone::step, nav::Zone::traversable});
+  const nav::ZoneMap theirs =
+      strip_zones({nav::Zone::step, nav::Zone::step, nav::Zone::traversable, nav::Zone::traversable});
+  const BandTable table = score_zones(ours, theirs, truth);
+  EXPECT_EQ(table[0].obstacle_pixels, 2U);
+  EXPECT_EQ(table[0].obstacles_prohibited, 1U);
+  EXPECT_EQ(table[0].free_pixels, 2U);
+  EXPECT_EQ(table[0].free_prohibited, 1U);
+  EXPECT_EQ(table[1].obstacle_pixels + table[2].free_pixels, 0U);
+  // The detector alone: the margin is no hazard.
+  const BandTable hazards = score_hazards(ours, truth);
+  EXPECT_EQ(hazards[0].obstacles_prohibited, 0U);
+  EXPECT_EQ(hazards[0].free_prohibited, 1U);
+}
+
+TEST(ScoreZones, FreeGroundInsideTheTruthsMarginAndPixelsOneCameraMissesAreNotScored) {
+  world::GroundTruth truth = strip_truth();
+  truth.valid(3, 0) = 0; // occluded from the right camera
+  const nav::ZoneMap ours = strip_zones({nav::Zone::step, nav::Zone::step, nav::Zone::step,
+                                         nav::Zone::step});
+  const nav::ZoneMap theirs = strip_zones({nav::Zone::margin, nav::Zone::traversable,
+                                           nav::Zone::traversable, nav::Zone::traversable});
+  const BandTable table = score_zones(ours, theirs, truth);
+  EXPECT_EQ(table[0].free_pixels, 2U);
+  EXPECT_EQ(table[0].free_prohibited, 2U);
+}
+
+TEST(CrossesObstacle, IsTrueWhenAnyPathPixelSeesAnObstacle) {
+  world::GroundTruth truth = strip_truth();
+  nav::PathPlan plan;
+  plan.pixels = {{0, 0}, {1, 0}};
+  EXPECT_FALSE(crosses_obstacle(plan, truth));
+  truth.obstacles(1, 0) = 255;
+  EXPECT_TRUE(crosses_obstacle(plan, truth));
+}
+
+TEST(Percent, IsNotANumberForAnEmptyWhole) {
+  EXPECT_DOUBLE_EQ(percent(1, 4), 25.0);
+  EXPECT_TRUE(std::isnan(percent(0, 0)));
+}
+
+TEST(EvalTerrainCommand, ReportsEveryKeyForTwoSmallSites) {
+  const auto result =
+      run_marsokhod("eval terrain --seeds 3..4 --size 64 --terrain-size 16 --json");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json["seeds"], 2);
+  for (const char* key : {"obstacle_recall", "false_prohibited", "paths_found", "unsafe_paths",
+                          "ground_truth_paths", "bands", "hazard_bands", "per_seed"})
+    EXPECT_TRUE(json.contains(key)) << key;
+  EXPECT_EQ(json["bands"].size(), 3U);
+  EXPECT_EQ(json["bands"][0]["band_m"], "2-6");
+  EXPECT_EQ(json["per_seed"].size(), 2U);
+  EXPECT_NE(result.err.find("seed 2/2"), std::string::npos) << result.err;
+}
+
+TEST(EvalTerrainCommand, MalformedSeedRangesAreUsageErrors) {
+  for (const std::string seeds : {"5..3", "abc", "1..", "-1..2"}) {
+    const auto result = run_marsokhod("eval terrain --seeds " + seeds);
+    EXPECT_EQ(result.exit_code, 2) << seeds;
+    EXPECT_NE(result.err.find("--seeds"), std::string::npos) << result.err;
+  }
+}
+
+} // namespace
+} // namespace marsokhod::apps

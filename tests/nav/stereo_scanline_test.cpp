@@ -1,0 +1,177 @@
+// The scan-line dynamic programme, the left-right check and the fill policy on hand-made lines.
+#include "marsokhod/nav/consistency_check.hpp"
+#include "marsokhod/nav/disparity_fill.hpp"
+#include "marsokhod/nav/disparity_metrics.hpp"
+#include "marsokhod/nav/scanline_dp.hpp"
+#include "stereo_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace marsokhod::nav {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+// The step profile 3 (x < 20), 9 (20..39), 5 (x >= 40) over 60 pixels and 12 candidates.
+int step_profile(int x) { return x < 20 ? 3 : (x < 40 ? 9 : 5); }
+
+// Costs that favour the profile (10 per pixel of distance, capped) but lie at every seventh
+// pixel: there a wrong disparity costs 0 and the true one 12, so choosing pixel by pixel fails.
+std::vector<std::uint16_t> step_costs(int width, int candidates) {
+  std::vector<std::uint16_t> costs(static_cast<std::size_t>(width * candidates));
+  for (int x = 0; x < width; ++x)
+    for (int d = 0; d < candidates; ++d) {
+      int cost = std::min(10 * std::abs(d - step_profile(x)), 60);
+      if (x % 7 == 3)
+        cost = d == (step_profile(x) + 4) % candidates ? 0 : (d == step_profile(x) ? 12 : cost);
+      costs[static_cast<std::size_t>(x * candidates + d)] = static_cast<std::uint16_t>(cost);
+    }
+  return costs;
+}
+
+TEST(ScanlineDp, RecoversAStepProfileExactlyWhereWinnerTakesAllFails) {
+  constexpr int kWidth = 60;
+  constexpr int kCandidates = 12;
+  const std::vector<std::uint16_t> costs = step_costs(kWidth, kCandidates);
+  // Pixel by pixel the decoys win.
+  int decoys_won = 0;
+  for (int x = 0; x < kWidth; ++x) {
+    const auto* row = costs.data() + x * kCandidates;
+    decoys_won += std::min_element(row, row + kCandidates) - row != step_profile(x) ? 1 : 0;
+  }
+  ASSERT_GE(decoys_won, 8);
+  const std::vector<int> chosen = scanline_disparities(costs, kWidth, kCandidates, DpPenalties{});
+  for (int x = 0; x < kWidth; ++x)
+    EXPECT_EQ(chosen[static_cast<std::size_t>(x)], step_profile(x)) << "x = " << x;
+}
+
+TEST(ScanlineDp, WithoutPenaltiesEachPixelTakesItsCheapestDisparity) {
+  constexpr int kWidth = 60;
+  constexpr int kCandidates = 12;
+  const std::vector<std::uint16_t> costs = step_costs(kWidth, kCandidates);
+  const std::vector<int> chosen =
+      scanline_disparities(costs, kWidth, kCandidates, DpPenalties{0, 0, 0, 10});
+  for (int x = 0; x < kWidth; ++x) {
+    const auto* row = costs.data() + x * kCandidates;
+    EXPECT_EQ(chosen[static_cast<std::size_t>(x)], std::min_element(row, row + kCandidates) - row);
+  }
+}
+
+TEST(ScanlineDp, RejectsCostTablesOfTheWrongSizeOrRange) {
+  const std::vector<std::uint16_t> costs(10, 1);
+  EXPECT_THROW(scanline_disparities(costs, 3, 4, DpPenalties{}), std::invalid_argument);
+  std::vector<std::uint16_t> too_high(12, 1);
+  too_high[5] = 300;
+  EXPECT_THROW(scanline_disparities(too_high, 3, 4, DpPenalties{}), std::invalid_argument);
+  EXPECT_THROW(scanline_disparities(std::vector<std::uint16_t>(12, 1), 3, 4, DpPenalties{-1, 5, 5, 5}),
+               std::invalid_argument);
+}
+
+TEST(ConsistencyCheck, ThePixelWithTheCheaperClaimKeepsTheRightPixel) {
+  // Right pixel 3 is claimed by left pixels 3 (d 0, cost 5), 4 (d 1, cost 9) and 6 (d 3, cost
+  // 2); right pixel 4 by pixels 5 (d 1, cost 9) and 7 (d 3, cost 2). The cheap ones win.
+  const std::vector<int> left = {0, 0, 0, 0, 1, 1, 3, 3};
+  const std::vector<std::uint16_t> cost = {5, 5, 5, 5, 9, 9, 2, 2};
+  std::vector<int> right(8);
+  std::vector<std::uint16_t> workspace(8);
+  claim_right_pixels(left, cost, right, workspace);
+  EXPECT_EQ(right, (std::vector<int>{0, 0, 0, 3, 3, -1, -1, -1}));
+  std::vector<std::uint8_t> valid(8);
+  const int reliable = check_left_right(left, right, 0, valid);
+  // Pixels 3, 4 and 5 lost their right pixels to 6 and 7, whose disparity differs.
+  EXPECT_EQ(valid, (std::vector<std::uint8_t>{255, 255, 255, 0, 0, 0, 255, 255}));
+  EXPECT_EQ(reliable, 5);
+}
+
+TEST(ConsistencyCheck, ToleranceAcceptsNeighbouringDisparitiesAndTheImageEdgeIsUnreliable) {
+  const std::vector<int> left = {2, 1, 1};
+  const std::vector<int> right = {2, 1, -1};
+  std::vector<std::uint8_t> valid(3);
+  // x=0: 0-2 < 0 -> outside; x=1: right[0] = 2 vs 1 -> within 1; x=2: right[1] = 1 -> agrees.
+  EXPECT_EQ(check_left_right(left, right, 1, valid), 2);
+  EXPECT_EQ(valid, (std::vector<std::uint8_t>{0, 255, 255}));
+  EXPECT_EQ(check_left_right(left, right, 0, valid), 1);
+}
+
+TEST(DisparityFill, RunsTakeTheSmallerOfTheirBoundingValuesAndEdgesTheirOneNeighbour) {
+  Image<float> disparity(8, 1);
+  const float values[8] = {kInf, 7, kInf, kInf, 3, kInf, 5, kInf};
+  std::copy(values, values + 8, disparity.data());
+  Image<std::uint8_t> valid(8, 1);
+  const std::uint8_t reliable[8] = {0, 255, 0, 0, 255, 0, 255, 0};
+  std::copy(reliable, reliable + 8, valid.data());
+  EXPECT_EQ(fill_disparity(disparity.view(), valid.view(), FillPolicy::background_along_row), 5U);
+  const std::vector<float> filled(disparity.data(), disparity.data() + 8);
+  EXPECT_EQ(filled, (std::vector<float>{7, 7, 3, 3, 3, 3, 5, 5}));
+}
+
+TEST(DisparityFill, ARowWithoutReliablePixelsCopiesTheNearestRowAndNoneLeavesUnknowns) {
+  Image<float> disparity(3, 3, 1, kInf);
+  Image<std::uint8_t> valid(3, 3);
+  disparity(0, 2) = 4;
+  valid(0, 2) = 255;
+  Image<float> untouched = disparity;
+  EXPECT_EQ(fill_disparity(untouched.view(), valid.view(), FillPolicy::none), 0U);
+  EXPECT_TRUE(std::isinf(untouched(1, 1)));
+  fill_disparity(disparity.view(), valid.view(), FillPolicy::background_along_row);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 3; ++x)
+      EXPECT_EQ(disparity(x, y), 4.0F);
+}
+
+TEST(DisparityFill, MedianMatchesSortingEachNineNeighbourWindow) {
+  const Image<std::uint8_t> dots = testing::random_dots(23, 11, 5);
+  Image<float> field(23, 11);
+  for (std::size_t i = 0; i < dots.size(); ++i)
+    field.data()[i] = static_cast<float>(dots.data()[i]) * 0.25F;
+  Image<float> median(23, 11);
+  median3x3(field.view(), median.view());
+  for (int y = 0; y < 11; ++y)
+    for (int x = 0; x < 23; ++x) {
+      std::array<float, 9> window{};
+      int i = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          window[static_cast<std::size_t>(i++)] =
+              field(std::clamp(x + dx, 0, 22), std::clamp(y + dy, 0, 10));
+      std::sort(window.begin(), window.end());
+      ASSERT_EQ(median(x, y), window[4]) << x << "," << y;
+    }
+}
+
+TEST(DisparityFill, PoliciesReadBackFromTheirNames) {
+  EXPECT_EQ(parse_fill_policy("background"), FillPolicy::background_along_row);
+  EXPECT_EQ(parse_fill_policy("none"), FillPolicy::none);
+  EXPECT_FALSE(parse_fill_policy("nearest").has_value());
+}
+
+} // namespace
+} // namespace marsokhod::nav
+
+namespace marsokhod::nav {
+namespace {
+
+TEST(DisparityMetrics, MissingEstimatesCountAsBadAndUnknownTruthIsSkipped) {
+  Image<float> truth(4, 1);
+  Image<float> estimate(4, 1);
+  const float known[4] = {0.0F, 5.0F, 5.0F, 5.0F}; // 0 = unknown
+  const float guessed[4] = {9.0F, 5.9F, 3.0F, kInf};
+  std::copy(known, known + 4, truth.data());
+  std::copy(guessed, guessed + 4, estimate.data());
+  const BadPixelScore score = score_bad_pixels(estimate.view(), truth.view(), {}, 1.0F);
+  EXPECT_EQ(score.scored, 3U);
+  EXPECT_EQ(score.bad, 2U); // 3.0 is 2 px off, +inf is missing
+  Image<std::uint8_t> mask(4, 1);
+  mask(1, 0) = 255;
+  EXPECT_EQ(score_bad_pixels(estimate.view(), truth.view(), mask.view(), 1.0F).bad, 0U);
+}
+
+} // namespace
+} // namespace marsokhod::nav
