@@ -27,8 +27,11 @@ test: build
 bench: build
 	@sh scripts/run-benches.sh $(BUILD_DIR) $(OUT)/bench
 
-sanitize:
-	@$(MAKE) --no-print-directory test PRESET=sanitize
+# AddressSanitizer + UBSan build (build/sanitize) of the emulator, occam and image-reader
+# layers and their tests; `make sanitize SANITIZE_SCOPE=all` runs the whole suite.
+SANITIZE_SCOPE ?= layers
+sanitize: setup
+	@sh scripts/sanitize.sh $(SANITIZE_SCOPE)
 
 format:
 	@find nav world emulator occam_port apps tests benches \( -name '*.cpp' -o -name '*.hpp' \) -print0 | xargs -0 clang-format -i

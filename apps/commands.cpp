@@ -8,6 +8,7 @@ Command make_image_command(CLI::App& parent);
 Command make_rig_command(CLI::App& parent);
 Command make_eval_command(CLI::App& parent);
 Command make_nav_command(CLI::App& parent);
+Command make_calibrate_command(CLI::App& parent);
 Command make_linktest_command(CLI::App& parent);
 Command make_commstime_command(CLI::App& parent);
 
@@ -18,6 +19,7 @@ const std::vector<CommandFactory>& command_factories() {
       make_image_command,
       make_rig_command,
       make_nav_command,
+      make_calibrate_command,
       make_eval_command,
       make_linktest_command,
       make_commstime_command,

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include <chrono>
+#include <ctime>
 #include <fstream>
 #include <memory>
 #include <optional>
@@ -61,14 +61,16 @@ Measurement measure(const CommstimeCommandOptions& options, const emu::NodeSpec&
   commstime.loops = options.loops;
   commstime.parallel_delta = options.delta == "par";
   occam_port::spawn_commstime(node, commstime, m.result);
-  const auto start = std::chrono::steady_clock::now();
+  // Processor time, not wall time: on a shared machine the wall clock also counts the time
+  // other programs held the processor.
+  const std::clock_t start = std::clock();
   const emu::RunResult run = kernel.run();
-  const auto stop = std::chrono::steady_clock::now();
+  const std::clock_t stop = std::clock();
   if (run.reason != emu::StopReason::finished) {
     throw CommandError("Commstime did not finish: " +
                        (run.deadlock ? run.deadlock->text() : std::string(to_string(run.reason))));
   }
-  m.host_seconds = std::chrono::duration<double>(stop - start).count();
+  m.host_seconds = static_cast<double>(stop - start) / CLOCKS_PER_SEC;
   return m;
 }
 
@@ -121,7 +123,7 @@ void print_text(const CommstimeCommandOptions& options, const emu::PlatformSpec&
   fmt::print("  emulated time per loop   {:.3f} us ({:.1f} cycles)\n",
              m.result.emulated_us_per_loop(), cycles);
   fmt::print("  per communication        {:.3f} us\n", m.result.emulated_us_per_loop() / 4.0);
-  fmt::print("  host time per comm.      {:.1f} ns ({} communications in {:.3f} s)\n",
+  fmt::print("  host CPU time per comm.  {:.1f} ns ({} communications in {:.3f} s)\n",
              host_ns_per_communication(m), m.result.communications, m.host_seconds);
 }
 

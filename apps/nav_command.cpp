@@ -4,6 +4,7 @@
 #include "marsokhod/nav/camera.hpp"
 #include "marsokhod/nav/image_io.hpp"
 #include "marsokhod/nav/navigation.hpp"
+#include "marsokhod/nav/vertical_parallax.hpp"
 #include "nav_outputs.hpp"
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace marsokhod::apps {
 namespace {
@@ -30,6 +32,7 @@ struct NavCli {
   std::optional<fs::path> rig_file;
   std::optional<fs::path> disparity_file;
   std::optional<fs::path> scene_file;
+  std::optional<fs::path> calibration_file;
   double pitch_deg = 0.0;
   double roll_deg = 0.0;
   double heading_deg = 0.0;
@@ -65,6 +68,19 @@ nav::StereoRig rig_for(const NavCli& cli, int width, int height) {
                                      height));
     return rig;
   } catch (const nav::RigError& error) {
+    throw CommandError(error.what());
+  }
+}
+
+// The right image with the calibrated vertical parallax removed, or unchanged without one.
+nav::Image<std::uint8_t> aligned_right(const NavCli& cli, nav::Image<std::uint8_t> right) {
+  if (!cli.calibration_file)
+    return right;
+  try {
+    const nav::VerticalParallaxMap map = nav::load_vertical_parallax(*cli.calibration_file);
+    nav::check_map_size(map, right.width(), right.height(), cli.calibration_file->string());
+    return nav::remove_vertical_parallax(right, map);
+  } catch (const nav::CalibrationError& error) {
     throw CommandError(error.what());
   }
 }
@@ -137,12 +153,13 @@ void print_summary(const nav::NavigationResult& result, const fs::path& out, dou
 
 int run_nav(const NavCli& cli) {
   const nav::Image<std::uint8_t> left = read_grey(cli.left);
-  const nav::Image<std::uint8_t> right = read_grey(cli.right);
+  nav::Image<std::uint8_t> right = read_grey(cli.right);
   if (left.width() != right.width() || left.height() != right.height())
     throw CommandError(fmt::format("{} is {}x{} but {} is {}x{}; a stereo pair has one size",
                                    cli.left.string(), left.width(), left.height(),
                                    cli.right.string(), right.width(), right.height()));
   const nav::StereoRig rig = rig_for(cli, left.width(), left.height());
+  right = aligned_right(cli, std::move(right));
   nav::NavigationOptions options;
   options.attitude = cli.scene_file ? scene_attitude(*cli.scene_file)
                                      : nav::Attitude{cli.pitch_deg, cli.roll_deg};
@@ -211,6 +228,9 @@ Command make_nav_command(CLI::App& parent) {
                   "Take pitch and roll from a scene.json written by `marsokhod world`")
       ->excludes(pitch)
       ->excludes(roll);
+  app->add_option("--calibration", cli->calibration_file,
+                  "Remove this vertical parallax map (from `marsokhod calibrate`) from the right "
+                  "image before matching");
   app->add_flag("--json", cli->json, "Print a machine-readable summary on stdout");
   return {app, [cli] { return run_nav(*cli); }};
 }

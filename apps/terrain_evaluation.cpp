@@ -2,17 +2,21 @@
 // (docs/navigation.md, "Evaluation on synthetic terrain").
 
 #include "command.hpp"
+#include "terrain_scoring.hpp"
+
 #include "marsokhod/nav/navigation.hpp"
 #include "marsokhod/world/renderer.hpp"
 #include "marsokhod/world/terrain.hpp"
-#include "terrain_scoring.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <regex>
 #include <string>
@@ -40,7 +44,8 @@ SeedRange parse_seeds(const std::string& text) {
   static const std::regex pattern(R"(^(\d{1,18})(\.\.(\d{1,18}))?$)");
   std::smatch match;
   if (!std::regex_match(text, match, pattern))
-    throw UsageError(fmt::format("--seeds '{}': expected A..B (e.g. 1..50) or a single seed", text));
+    throw UsageError(
+        fmt::format("--seeds '{}': expected A..B (e.g. 1..50) or a single seed", text));
   const std::uint64_t first = std::stoull(match[1].str());
   const std::uint64_t last = match[3].matched ? std::stoull(match[3].str()) : first;
   if (last < first)
@@ -50,6 +55,8 @@ SeedRange parse_seeds(const std::string& text) {
   return {first, last};
 }
 
+using ElevationErrors = std::array<std::vector<float>, kTerrainBands.size()>;
+
 struct SeedOutcome {
   std::uint64_t seed = 0;
   BandTable bands{};
@@ -57,6 +64,7 @@ struct SeedOutcome {
   bool found = false;
   bool truth_found = false;
   bool unsafe = false;
+  ElevationErrors elevation_errors{};
   std::string reason;
   double seconds = 0.0;
 };
@@ -85,13 +93,13 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainCli& cli) {
       cli.oracle ? nav::navigate_disparity(frame.truth.disparity, frame.truth.valid, rig, options)
                  : nav::navigate(frame.images.left, frame.images.right, rig, options);
   SeedOutcome outcome;
-  outcome.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.seed = seed;
   outcome.hazards = score_hazards(result.zones, frame.truth);
   outcome.found = result.found();
   outcome.reason = result.reason();
   outcome.unsafe = result.found() && crosses_obstacle(result.plan, frame.truth);
+  collect_elevation_errors(result.terrain, frame.truth, outcome.elevation_errors);
 
   const nav::TerrainPoints truth_terrain =
       nav::reconstruct_terrain(frame.truth.disparity, rig, placement.attitude);
@@ -105,6 +113,7 @@ struct Summary {
   BandTable bands{};
   BandTable hazards{};
   BandCounts near{}; // 2-10 m
+  ElevationErrors elevation_errors{};
   int found = 0;
   int truth_found = 0;
   int found_where_truth = 0;
@@ -124,10 +133,22 @@ Summary summarize(const std::vector<SeedOutcome>& outcomes) {
     s.found_where_truth += (o.found && o.truth_found) ? 1 : 0;
     s.unsafe += o.unsafe ? 1 : 0;
     s.seconds += o.seconds;
+    for (std::size_t b = 0; b < s.elevation_errors.size(); ++b)
+      s.elevation_errors[b].insert(s.elevation_errors[b].end(), o.elevation_errors[b].begin(),
+                                   o.elevation_errors[b].end());
   }
   s.near = s.bands[0];
   s.near += s.bands[1];
   return s;
+}
+
+// The q-quantile (0..1) of `values`, NaN when empty; reorders `values`.
+double quantile(std::vector<float>& values, double q) {
+  if (values.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
 }
 
 nlohmann::ordered_json number_or_null(double value) {
@@ -146,8 +167,14 @@ void print_json(const TerrainCli& cli, const std::vector<SeedOutcome>& outcomes)
   json["light"] = cli.light;
   json["rocks"] = cli.rocks;
   json["stereo"] = cli.oracle ? "ground truth" : "matched";
-  json["obstacle_recall"] = number_or_null(percent(s.near.obstacles_prohibited, s.near.obstacle_pixels));
+  json["obstacle_recall"] =
+      number_or_null(percent(s.near.obstacles_prohibited, s.near.obstacle_pixels));
   json["false_prohibited"] = number_or_null(percent(s.near.free_prohibited, s.near.free_pixels));
+  nlohmann::ordered_json causes;
+  for (int z = 1; z < nav::kZoneKinds; ++z)
+    causes[std::string(nav::to_string(static_cast<nav::Zone>(z)))] = number_or_null(
+        percent(s.near.free_prohibited_as[static_cast<std::size_t>(z)], s.near.free_pixels));
+  json["false_prohibited_by_zone"] = causes;
   json["paths_found"] = s.found;
   json["ground_truth_paths"] = s.truth_found;
   json["paths_found_where_ground_truth_has_one"] = s.found_where_truth;
@@ -156,18 +183,20 @@ void print_json(const TerrainCli& cli, const std::vector<SeedOutcome>& outcomes)
   json["bands"] = nlohmann::ordered_json::array();
   for (std::size_t b = 0; b < s.bands.size(); ++b) {
     const BandCounts& c = s.bands[b];
-    json["bands"].push_back({{"band_m", band_name(kTerrainBands[b])},
-                             {"obstacle_pixels", c.obstacle_pixels},
-                             {"obstacle_recall", number_or_null(percent(c.obstacles_prohibited, c.obstacle_pixels))},
-                             {"free_pixels", c.free_pixels},
-                             {"false_prohibited", number_or_null(percent(c.free_prohibited, c.free_pixels))}});
+    json["bands"].push_back(
+        {{"band_m", band_name(kTerrainBands[b])},
+         {"obstacle_pixels", c.obstacle_pixels},
+         {"obstacle_recall", number_or_null(percent(c.obstacles_prohibited, c.obstacle_pixels))},
+         {"free_pixels", c.free_pixels},
+         {"false_prohibited", number_or_null(percent(c.free_prohibited, c.free_pixels))}});
   }
   json["hazard_bands"] = nlohmann::ordered_json::array();
   for (std::size_t b = 0; b < s.hazards.size(); ++b) {
     const BandCounts& c = s.hazards[b];
-    json["hazard_bands"].push_back({{"band_m", band_name(kTerrainBands[b])},
-                                    {"obstacle_recall", number_or_null(percent(c.obstacles_prohibited, c.obstacle_pixels))},
-                                    {"false_hazard", number_or_null(percent(c.free_prohibited, c.free_pixels))}});
+    json["hazard_bands"].push_back(
+        {{"band_m", band_name(kTerrainBands[b])},
+         {"obstacle_recall", number_or_null(percent(c.obstacles_prohibited, c.obstacle_pixels))},
+         {"false_hazard", number_or_null(percent(c.free_prohibited, c.free_pixels))}});
   }
   json["per_seed"] = nlohmann::ordered_json::array();
   for (const SeedOutcome& o : outcomes) {
@@ -191,8 +220,8 @@ void print_table(const TerrainCli& cli, const std::vector<SeedOutcome>& outcomes
   fmt::print("{} seeds, {}x{} px, light {}, rocks {:.0f} %, {} disparity\n", outcomes.size(),
              cli.size, cli.size, cli.light, 100.0 * cli.rocks,
              cli.oracle ? "ground-truth" : "matched");
-  fmt::print("{:<8} {:>12} {:>10} {:>12} {:>13}\n", "band m", "obstacle px", "recall %",
-             "free px", "false proh. %");
+  fmt::print("{:<8} {:>12} {:>10} {:>12} {:>13}\n", "band m", "obstacle px", "recall %", "free px",
+             "false proh. %");
   for (std::size_t b = 0; b < s.bands.size(); ++b) {
     const BandCounts& c = s.bands[b];
     fmt::print("{:<8} {:>12} {:>10} {:>12} {:>13}\n", band_name(kTerrainBands[b]),
@@ -205,12 +234,25 @@ void print_table(const TerrainCli& cli, const std::vector<SeedOutcome>& outcomes
                shown(percent(s.hazards[b].obstacles_prohibited, s.hazards[b].obstacle_pixels)),
                shown(percent(s.hazards[b].free_prohibited, s.hazards[b].free_pixels)));
   fmt::print("\n");
-  fmt::print("2-10 m: obstacle recall {} %, false prohibition {} %\n",
+  fmt::print("2-10 m: obstacle recall {} %, false prohibition {} % (",
              shown(percent(s.near.obstacles_prohibited, s.near.obstacle_pixels)),
              shown(percent(s.near.free_prohibited, s.near.free_pixels)));
+  for (int z = 1; z < nav::kZoneKinds; ++z)
+    fmt::print(
+        "{}{} {}", z > 1 ? ", " : "", nav::to_string(static_cast<nav::Zone>(z)),
+        shown(percent(s.near.free_prohibited_as[static_cast<std::size_t>(z)], s.near.free_pixels)));
+  fmt::print(")\n");
   fmt::print("paths found {} of {} seeds; ground truth has a path on {}, of which found {}; "
              "unsafe paths {}\n",
              s.found, outcomes.size(), s.truth_found, s.found_where_truth, s.unsafe);
+  fmt::print("elevation error on free ground, cm, median / 90 % / 99 %:");
+  for (std::size_t b = 0; b < s.elevation_errors.size(); ++b) {
+    std::vector<float> errors = s.elevation_errors[b];
+    fmt::print(" {} m {} / {} / {};", band_name(kTerrainBands[b]),
+               shown(100.0 * quantile(errors, 0.5)), shown(100.0 * quantile(errors, 0.9)),
+               shown(100.0 * quantile(errors, 0.99)));
+  }
+  fmt::print("\n");
   fmt::print("navigation {:.2f} ms per seed (host wall clock)\n",
              outcomes.empty() ? 0.0 : 1000.0 * s.seconds / outcomes.size());
 }
@@ -222,6 +264,17 @@ Command add_terrain_evaluation(CLI::App& eval) {
   CLI::App* app = eval.add_subcommand(
       "terrain", "Render synthetic sites, navigate, and score the prohibited zones and paths "
                  "against ground truth.");
+  app->footer(
+      "Scoring: the ground-truth zones are the world's obstacle map at each visible pixel, grown "
+      "by the rover's half-width on the same ground grid the navigation grows its own (pixels "
+      "the left camera does not see are unknown). Over the pixels both cameras see, by true "
+      "ground range: obstacle recall = ground-truth obstacle pixels the navigation prohibits "
+      "(any zone but traversable); false prohibition = pixels traversable in the ground-truth "
+      "zones that the navigation prohibits (free pixels inside the truth's margin are not "
+      "scored). 'Ground truth has a path' = the same planner finds one on the ground-truth "
+      "zones and terrain; a path is unsafe when any of its pixels sees a ground-truth obstacle "
+      "(not grown). 'Hazards alone' scores unknown, step and slope pixels against the obstacle "
+      "map itself, without margins.");
   app->add_option("--seeds", cli->seeds, "Terrain seeds A..B (inclusive) or one seed")->required();
   app->add_option("--size", cli->size, "Image width and height, pixels")
       ->check(CLI::Range(32, 1024))

@@ -1,5 +1,6 @@
 #include "terrain_scoring.hpp"
 
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -20,6 +21,8 @@ BandCounts& BandCounts::operator+=(const BandCounts& other) {
   obstacles_prohibited += other.obstacles_prohibited;
   free_pixels += other.free_pixels;
   free_prohibited += other.free_prohibited;
+  for (std::size_t z = 0; z < free_prohibited_as.size(); ++z)
+    free_prohibited_as[z] += other.free_prohibited_as[z];
   return *this;
 }
 
@@ -39,6 +42,7 @@ BandTable score_zones(const nav::ZoneMap& zones, const nav::ZoneMap& truth_zones
       } else if (truth_zones.traversable(x, y)) {
         ++counts.free_pixels;
         counts.free_prohibited += prohibited ? 1 : 0;
+        counts.free_prohibited_as[zones.zone(x, y) % nav::kZoneKinds] += prohibited ? 1 : 0;
       }
     }
   return table;
@@ -78,6 +82,17 @@ nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::
     }
   nav::add_margin(terrain, options, zones);
   return zones;
+}
+
+void collect_elevation_errors(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
+                              std::array<std::vector<float>, kTerrainBands.size()>& errors) {
+  for (int y = 0; y < terrain.height(); ++y)
+    for (int x = 0; x < terrain.width(); ++x) {
+      const std::optional<std::size_t> band = band_of(truth.range(x, y));
+      if (!band || truth.valid(x, y) == 0 || truth.obstacles(x, y) != 0 || !terrain.known(x, y))
+        continue;
+      errors[*band].push_back(std::abs(terrain.elevation(x, y) - truth.elevation(x, y)));
+    }
 }
 
 bool crosses_obstacle(const nav::PathPlan& plan, const world::GroundTruth& truth) {

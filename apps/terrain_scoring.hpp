@@ -25,6 +25,8 @@ struct BandCounts {
   std::uint64_t obstacles_prohibited = 0;
   std::uint64_t free_pixels = 0;
   std::uint64_t free_prohibited = 0;
+  /// free_prohibited split by the zone the navigation gave those pixels (nav::Zone order).
+  std::array<std::uint64_t, nav::kZoneKinds> free_prohibited_as{};
 
   BandCounts& operator+=(const BandCounts& other);
 };
@@ -48,6 +50,11 @@ BandTable score_hazards(const nav::ZoneMap& zones, const world::GroundTruth& tru
 /// is on an obstacle, then the rover's margin as the navigation adds it.
 nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
                                 const nav::ZoneOptions& options);
+
+/// Elevation errors (|ours - truth|, metres) per band over the pixels both cameras see on free
+/// ground (no obstacle) where the navigation has a point, appended to `errors`.
+void collect_elevation_errors(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
+                              std::array<std::vector<float>, kTerrainBands.size()>& errors);
 
 /// True when a pixel of the path sees a ground-truth obstacle.
 bool crosses_obstacle(const nav::PathPlan& plan, const world::GroundTruth& truth);

@@ -3,6 +3,7 @@
 // stage after stereo on its own, and the chain with a counting meter to show what metering
 // costs. The scene (default site, seed 1, high sun) is rendered once, outside the timed loops.
 #include "marsokhod/nav/navigation.hpp"
+#include "marsokhod/nav/vertical_parallax.hpp"
 #include "marsokhod/world/renderer.hpp"
 #include "marsokhod/world/terrain.hpp"
 
@@ -70,17 +71,37 @@ void BM_NavAfterStereo256(benchmark::State& state) {
   const nav::NavigationResult matched =
       nav::navigate(s.frame.images.left, s.frame.images.right, s.rig, options);
   for (auto _ : state) {
-    nav::NavigationResult result = nav::navigate_disparity(
-        matched.stereo.disparity, matched.stereo.valid, s.rig, options);
+    nav::NavigationResult result =
+        nav::navigate_disparity(matched.stereo.disparity, matched.stereo.valid, s.rig, options);
     benchmark::DoNotOptimize(result.plan.pixels.data());
   }
 }
 BENCHMARK(BM_NavAfterStereo256)->Unit(benchmark::kMicrosecond);
 
+// What a calibration adds to every cycle: removing the vertical parallax map from the right
+// image (a 1.5-row shift with gentle slopes and curvature, as a tilted camera gives).
+template <nav::VerticalInterpolation Interpolation>
+void BM_RemoveVerticalParallax256(benchmark::State& state) {
+  const Scene& s = scene();
+  const nav::VerticalParallaxMap map{256, 256, {1.5, 1e-3, -2e-3, 1e-6, 2e-6, 3.4e-6}};
+  for (auto _ : state) {
+    nav::Image<std::uint8_t> aligned =
+        nav::remove_vertical_parallax(s.frame.images.right, map, Interpolation);
+    benchmark::DoNotOptimize(aligned.data());
+  }
+}
+BENCHMARK(BM_RemoveVerticalParallax256<nav::VerticalInterpolation::linear>)
+    ->Name("BM_RemoveVerticalParallax256")
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RemoveVerticalParallax256<nav::VerticalInterpolation::cubic>)
+    ->Name("BM_RemoveVerticalParallax256_cubic")
+    ->Unit(benchmark::kMicrosecond);
+
 void BM_Terrain256(benchmark::State& state) {
   const Scene& s = scene();
   for (auto _ : state) {
-    nav::TerrainPoints terrain = nav::reconstruct_terrain(s.frame.truth.disparity, s.rig, s.attitude);
+    nav::TerrainPoints terrain =
+        nav::reconstruct_terrain(s.frame.truth.disparity, s.rig, s.attitude);
     benchmark::DoNotOptimize(terrain.elevation.data());
   }
 }

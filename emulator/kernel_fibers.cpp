@@ -1,7 +1,7 @@
 // Process contexts: fibers, direct switches between processes, giving and taking CPUs, the
 // kernel's own events (end of a compute chunk, deadline, dispatch), the process registry.
 
-#include "kernel_impl.hpp"
+#include "kernel_switch.hpp"
 
 #include "marsokhod/emulator/kernel.hpp"
 
@@ -9,20 +9,6 @@
 #include <utility>
 
 namespace marsokhod::emulator {
-
-void Kernel::Impl::switch_to(boost::context::fiber& target, boost::context::fiber& save) {
-  save_slot = &save;
-  boost::context::fiber from = std::move(target).resume();
-  // Whoever switched to us said where its own context belongs.
-  *save_slot = std::move(from);
-  after_switch();
-}
-
-void Kernel::Impl::after_switch() {
-  if (zombie != nullptr) {
-    processes.remove_and_delete(std::exchange(zombie, nullptr));
-  }
-}
 
 void Kernel::Impl::start_fiber(Process& p, std::size_t stack_bytes) {
   auto& parked = idle[stack_bytes];
@@ -80,51 +66,6 @@ boost::context::fiber Kernel::Impl::fiber_main(detail::Context& context) {
     parked.push_back(std::move(p.context_));
     switch_to(context_of(next), context.fiber);
   }
-}
-
-void Kernel::Impl::grant(Cpu& cpu, Process& next) {
-  cpu.running_ = &next;
-  next.state_ = ProcessState::running;
-  next.slice_end_ = kNever;
-  const CpuTiming& timing = cpu.timing_;
-  if (next.priority_ == Priority::low && timing.timeslice > 0) {
-    // The timeslice clock ticks at multiples of the period; a low-priority process is
-    // descheduled at a chunk boundary once it has seen `slices_before_deschedule` ticks
-    // since it got the CPU. The CPU keeps the next tick so that a switch costs no division.
-    if (owner->now_ >= cpu.next_tick_) {
-      cpu.next_tick_ = (owner->now_ / timing.timeslice + 1) * timing.timeslice;
-    }
-    next.slice_end_ = cpu.next_tick_ + (timing.slices_before_deschedule - 1) * timing.timeslice;
-  }
-  cpu.busy_since_ = owner->now_;
-  if (owner->trace_ != nullptr) {
-    owner->trace_->begin_slice(cpu.track_, owner->now_, next.name_);
-  }
-}
-
-void Kernel::Impl::release(Cpu& cpu) {
-  if (cpu.running_ == nullptr) {
-    return;
-  }
-  cpu.busy_total_ += owner->now_ - cpu.busy_since_;
-  cpu.running_ = nullptr;
-  if (owner->trace_ != nullptr) {
-    owner->trace_->end_slice(cpu.track_, owner->now_);
-  }
-}
-
-// Hands the CPU of the current process to the next ready one; returns it (nullptr: idle).
-Process* Kernel::Impl::leave_cpu(Process& p) {
-  Cpu& cpu = *p.cpu_;
-  release(cpu);
-  cpu.preempt_requested_ = false;
-  Process* next = cpu.pop();
-  if (next != nullptr) {
-    grant(cpu, *next);
-  }
-  owner->current_ = next;
-  ++owner->switches_;
-  return next;
 }
 
 void Kernel::Impl::request_dispatch(Cpu& cpu, Tick at) {

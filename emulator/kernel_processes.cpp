@@ -1,6 +1,6 @@
 // The process API: spawning, CPU time, blocking and waking, yielding, killing.
 
-#include "kernel_impl.hpp"
+#include "kernel_switch.hpp"
 
 #include "marsokhod/emulator/kernel.hpp"
 
@@ -13,9 +13,13 @@ namespace marsokhod::emulator {
 
 namespace {
 
-Process& require_current(Process* current, const char* operation) {
-  if (current == nullptr) {
-    throw std::logic_error(std::string(operation) + " called outside a simulated process");
+[[noreturn, gnu::noinline, gnu::cold]] void no_current_process(const char* operation) {
+  throw std::logic_error(std::string(operation) + " called outside a simulated process");
+}
+
+inline Process& require_current(Process* current, const char* operation) {
+  if (current == nullptr) [[unlikely]] {
+    no_current_process(operation);
   }
   return *current;
 }
@@ -79,7 +83,7 @@ void Kernel::consume_slowly(Tick duration) {
   }
 }
 
-void Kernel::block(const WaitInfo& why) {
+void Kernel::block(WaitInfo why) {
   Process& p = require_current(current_, "Kernel::block");
   if (impl_->unwinding > 0) {
     std::fputs("marsokhod: a process blocked while being killed\n", stderr);
@@ -93,7 +97,7 @@ void Kernel::block(const WaitInfo& why) {
   p.wait_ = WaitInfo{};
 }
 
-bool Kernel::block_until(Tick deadline, const WaitInfo& why) {
+bool Kernel::block_until(Tick deadline, WaitInfo why) {
   Process& p = require_current(current_, "Kernel::block_until");
   p.timed_out_ = false;
   p.timeout_event_ =

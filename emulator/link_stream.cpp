@@ -2,10 +2,13 @@
 
 #include "marsokhod/emulator/kernel.hpp"
 #include "marsokhod/emulator/link_network.hpp"
+#include "marsokhod/emulator/node.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <memory>
+#include <memory_resource>
 #include <stdexcept>
 #include <vector>
 
@@ -31,14 +34,6 @@ const WireSpec& pick_wire(const PlatformSpec& platform) {
       fmt::format("{}: no working wire joins two powered nodes", platform.source));
 }
 
-CpuTiming timing_of(const NodeSpec& node) {
-  CpuTiming timing;
-  timing.timeslice = node.cpu.timeslice;
-  timing.slices_before_deschedule = node.cpu.slices_before_deschedule;
-  timing.preemption_latency = node.cpu.costs.event_latency_cycles * node.cpu.cycle;
-  return timing;
-}
-
 /// One direction's sender and receiver processes and what they saw.
 struct Direction {
   LinkPort* from = nullptr;
@@ -49,13 +44,15 @@ struct Direction {
   bool intact = true;
 };
 
-void spawn_direction(Kernel& kernel, Cpu& sender, Cpu& receiver, Direction& d, int index,
+// The message buffers live in the nodes' own memory, as on the real machine: the trace's
+// memory counters show them, and a message larger than a node's memory is a memory fault.
+void spawn_direction(Kernel& kernel, Node& sender, Node& receiver, Direction& d, int index,
                      const LinkStreamOptions& options) {
   const std::string tag = index == 0 ? "" : "_back";
-  kernel.spawn(
-      sender, "stream_out" + tag,
-      [&kernel, &d, index, options] {
-        std::vector<std::byte> message(options.message_bytes);
+  sender.spawn(
+      "stream_out" + tag,
+      [&kernel, &d, &sender, index, options] {
+        std::pmr::vector<std::byte> message(options.message_bytes, &sender.memory());
         for (std::uint64_t sent = 0; sent < options.bytes;) {
           const auto size = static_cast<std::size_t>(
               std::min<std::uint64_t>(message.size(), options.bytes - sent));
@@ -66,11 +63,11 @@ void spawn_direction(Kernel& kernel, Cpu& sender, Cpu& receiver, Direction& d, i
           sent += size;
         }
       },
-      SpawnOptions{Priority::high});
-  kernel.spawn(
-      receiver, "stream_in" + tag,
-      [&kernel, &d, index, options] {
-        std::vector<std::byte> message(options.message_bytes);
+      NodeSpawnOptions{Priority::high});
+  receiver.spawn(
+      "stream_in" + tag,
+      [&kernel, &d, &receiver, index, options] {
+        std::pmr::vector<std::byte> message(options.message_bytes, &receiver.memory());
         for (std::uint64_t got = 0; got < options.bytes;) {
           const auto size = static_cast<std::size_t>(
               std::min<std::uint64_t>(message.size(), options.bytes - got));
@@ -82,7 +79,7 @@ void spawn_direction(Kernel& kernel, Cpu& sender, Cpu& receiver, Direction& d, i
         }
         d.arrived = kernel.now();
       },
-      SpawnOptions{Priority::high});
+      NodeSpawnOptions{Priority::high});
 }
 
 } // namespace
@@ -96,9 +93,18 @@ LinkStreamResult run_link_stream(const PlatformSpec& platform, const LinkStreamO
 
   Kernel kernel;
   kernel.set_trace(options.trace);
-  Cpu& cpu_a = kernel.add_cpu(node_a.name, timing_of(node_a));
-  Cpu& cpu_b = kernel.add_cpu(node_b.name, timing_of(node_b));
   LinkNetwork network(kernel, platform, options.mbps);
+  // Every node of the platform, so that the trace shows the unpowered ones as such. Declared
+  // after the network: the nodes (and any process still on them) go first.
+  std::vector<std::unique_ptr<Node>> nodes;
+  for (const NodeSpec& spec : platform.nodes) {
+    nodes.push_back(std::make_unique<Node>(kernel, spec));
+    network.attach(*nodes.back());
+  }
+  const auto node_named = [&nodes](const std::string& name) -> Node& {
+    return **std::find_if(nodes.begin(), nodes.end(),
+                          [&name](const auto& node) { return node->name() == name; });
+  };
   LinkPort& port_a = network.require_port(wire.a.owner, wire.a.link);
   LinkPort& port_b = network.require_port(wire.b.owner, wire.b.link);
 
@@ -111,9 +117,11 @@ LinkStreamResult run_link_stream(const PlatformSpec& platform, const LinkStreamO
   if (options.both_ways)
     directions.push_back(
         Direction{&port_b, &port_a, cost(node_b, Instruction::out), cost(node_a, Instruction::in)});
-  spawn_direction(kernel, cpu_a, cpu_b, directions[0], 0, options);
+  Node& a = node_named(node_a.name);
+  Node& b = node_named(node_b.name);
+  spawn_direction(kernel, a, b, directions[0], 0, options);
   if (options.both_ways)
-    spawn_direction(kernel, cpu_b, cpu_a, directions[1], 1, options);
+    spawn_direction(kernel, b, a, directions[1], 1, options);
 
   const RunResult run = kernel.run();
   LinkStreamResult result;

@@ -15,12 +15,15 @@ void attach_memory(MemoryArena& arena, Kernel& kernel, const std::string& node) 
   if (sink == nullptr)
     return;
   const TrackId track = sink->track(node, "memory");
-  arena.set_usage_listener([&kernel, sink, track](const ArenaUsage& usage) {
+  const auto sample = [&kernel, sink, track](const ArenaUsage& usage) {
     sink->counter(track, kernel.now(), "in_use_bytes",
                   static_cast<std::int64_t>(usage.in_use_bytes));
     sink->counter(track, kernel.now(), "high_water_bytes",
                   static_cast<std::int64_t>(usage.peak_bytes));
-  });
+  };
+  // The starting point, so that the counters show even for a node that never allocates.
+  sample(arena.usage());
+  arena.set_usage_listener(sample);
   arena.set_fault_listener([&kernel, sink, track](const MemoryFault& fault) {
     sink->instant(track, kernel.now(), "memory fault", fault.what());
   });

@@ -40,6 +40,10 @@ Node::Node(Kernel& kernel, const NodeSpec& spec)
   attach_memory(*memory_, kernel, spec_.name);
   if (TraceSink* sink = kernel.trace()) {
     events_track_ = sink->track(spec_.name, "events");
+    if (!powered_) {
+      // A cold spare: the trace shows from the start that the node is off.
+      sink->instant(events_track_, kernel.now(), "power off", spec_.name);
+    }
   }
 }
 

@@ -123,14 +123,14 @@ void validate(const PlannerOptions& options) {
           options.length_weight, "must be finite and not negative");
   require(std::isfinite(options.flat_tolerance_m) && options.flat_tolerance_m >= 0.0,
           "flat_tolerance_m", options.flat_tolerance_m, "must be finite and not negative");
-  require(std::isfinite(options.heading_weight) && options.heading_weight >= 0.0,
-          "heading_weight", options.heading_weight, "must be finite and not negative");
+  require(std::isfinite(options.heading_weight) && options.heading_weight >= 0.0, "heading_weight",
+          options.heading_weight, "must be finite and not negative");
+  require(options.max_edge_m > 0.0, "max_edge_m", options.max_edge_m, "must be positive");
 }
 
 template <class Meter>
 PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
-                   const PlannerOptions& options, Meter& meter,
-                   std::pmr::memory_resource* memory) {
+                   const PlannerOptions& options, Meter& meter, std::pmr::memory_resource* memory) {
   validate(options);
   if (zones.width() != terrain.width() || zones.height() != terrain.height())
     throw std::invalid_argument(fmt::format("plan_path: {}x{} zones for a {}x{} terrain",
@@ -149,7 +149,8 @@ PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
                      memory);
   const RowSweep sweep =
       sweep_rows(terrain, zones, *start, *first_row,
-                 EdgeWeights{options.length_weight, options.flat_tolerance_m}, meter, memory);
+                 EdgeWeights{options.length_weight, options.flat_tolerance_m, options.max_edge_m},
+                 meter, memory);
   const std::optional<Destination> destination = choose_destination(terrain, sweep, options);
   if (!destination)
     return not_found(fmt::format("no traversable point {:.1f}-{:.1f} m away can be reached "
@@ -167,7 +168,7 @@ PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template PathPlan plan_path<M>(const TerrainPoints&, const ZoneMap&, const PlannerOptions&, M&, \
+  template PathPlan plan_path<M>(const TerrainPoints&, const ZoneMap&, const PlannerOptions&, M&,  \
                                  std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE

@@ -1,6 +1,6 @@
-#include "marsokhod/nav/path_planner.hpp"
-
 #include "work_report.hpp"
+
+#include "marsokhod/nav/path_planner.hpp"
 
 #include <fmt/format.h>
 
@@ -17,14 +17,17 @@ constexpr float kUnreached = std::numeric_limits<float>::infinity();
 // Straight ahead first, so that exact ties keep the path straight.
 constexpr int kSteps[3] = {0, -1, 1};
 
+// The edge's weight, or +inf when its ends lie farther apart than weights.max_edge_m.
 double edge_weight(const TerrainPoints& terrain, int x_from, int y_from, int x_to, int y_to,
                    const EdgeWeights& weights) {
+  const double run =
+      std::hypot(static_cast<double>(terrain.forward(x_to, y_to)) - terrain.forward(x_from, y_from),
+                 static_cast<double>(terrain.left(x_to, y_to)) - terrain.left(x_from, y_from));
+  if (run > weights.max_edge_m)
+    return kUnreached;
   const double climb = std::max(0.0, std::abs(static_cast<double>(terrain.elevation(x_to, y_to)) -
                                               terrain.elevation(x_from, y_from)) -
                                          weights.flat_tolerance_m);
-  const double run = std::hypot(
-      static_cast<double>(terrain.forward(x_to, y_to)) - terrain.forward(x_from, y_from),
-      static_cast<double>(terrain.left(x_to, y_to)) - terrain.left(x_from, y_from));
   return climb + weights.length_weight * run;
 }
 
@@ -83,7 +86,7 @@ RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoi
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template RowSweep sweep_rows<M>(const TerrainPoints&, const ZoneMap&, PixelPoint, int,          \
+  template RowSweep sweep_rows<M>(const TerrainPoints&, const ZoneMap&, PixelPoint, int,           \
                                   const EdgeWeights&, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE

@@ -5,6 +5,7 @@
 // grid (ground_grid.hpp) and write their verdicts into the pixels' zones.
 
 #include "ground_grid.hpp"
+
 #include "marsokhod/nav/elevation.hpp"
 #include "marsokhod/nav/zones.hpp"
 
@@ -22,6 +23,12 @@ inline constexpr double kOrderSlack_m = 0.05;
 /// stereo mismatches do.
 std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions& options,
                                 Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);
+
+/// Turns back to Zone::traversable the runs of unknown pixels along a row that have a
+/// (filled-in) ground point and whose two traversable ends are less than bridged_gap_m apart
+/// on the ground and within max_step_m of each other in height. Returns the tests made.
+std::uint64_t bridge_small_gaps(const TerrainPoints& terrain, const ZoneOptions& options,
+                                Image<std::uint8_t>& zone);
 
 /// Cells of the grid within `distance_m` along each axis: at least one.
 int cells_within(const GroundGrid& grid, double distance_m);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace marsokhod::nav::detail {
 namespace {
@@ -13,45 +14,55 @@ class PlaneFit {
 public:
   PlaneFit(const GroundGrid& grid, int d) : grid_(grid), d_(d) {}
 
-  // Squared gradient of the plane at cell (ix, iy), whose own mean is `centre`.
-  double squared_gradient(int ix, int iy, double centre, std::uint64_t& tests) const {
-    const double gx = gradient(ix, iy, 1, 0, centre, tests);
-    const double gy = gradient(ix, iy, 0, 1, centre, tests);
+  // Squared gradient of the plane at cell (ix, iy).
+  double squared_gradient(int ix, int iy, std::uint64_t& tests) const {
+    const double gx = gradient(ix, iy, 1, 0, tests);
+    const double gy = gradient(ix, iy, 0, 1, tests);
     return gx * gx + gy * gy;
   }
 
 private:
   // Gradient along (ax, ay): the outer lines are at -d and +d along it, spread along the
   // other axis. Only samples present on both lines are paired, so that a line cut short by
-  // the grid's edge does not mix in the other axis's gradient; with no pair, the centre cell
-  // and the sample beside it on the axis give a one-sided difference over half the distance.
-  double gradient(int ix, int iy, int ax, int ay, double centre, std::uint64_t& tests) const {
+  // the grid's edge does not mix in the other axis's gradient. Where an outer line lies beyond
+  // the grid's edge the centre line stands in for it over half the distance, as the world's
+  // rule clamps its samples at the edge. An outer line that is merely empty (ground hidden
+  // behind a rock, or far rows too sparse) gets no stand-in: a one-sided difference would read
+  // a rock too low to be an obstacle, against the hidden ground behind it, as a slope twice as
+  // steep as its flank over the baseline, and its margin would close the way around it.
+  double gradient(int ix, int iy, int ax, int ay, std::uint64_t& tests) const {
+    const int along = ax != 0 ? ix : iy;
+    const int cells = ax != 0 ? grid_.nx() : grid_.ny();
+    const int from = along - d_ >= 0 ? -d_ : 0;
+    const int to = along + d_ < cells ? d_ : 0;
+    if (from == to)
+      return 0.0;
+    const std::optional<double> rise = paired_rise(ix, iy, ax, ay, from, to, tests);
+    return rise ? *rise / ((to - from) * grid_.cell()) : 0.0;
+  }
+
+  // Mean rise from the line at `from` to the line at `to` along (ax, ay) over the samples
+  // present on both; nothing when no sample is.
+  std::optional<double> paired_rise(int ix, int iy, int ax, int ay, int from, int to,
+                                    std::uint64_t& tests) const {
     double rise = 0.0;
     int pairs = 0;
     for (const int across : {-d_, 0, d_}) {
-      const float low = sample(ix, iy, ax, ay, -d_, across, tests);
-      const float high = sample(ix, iy, ax, ay, d_, across, tests);
+      const float low = sample(ix, iy, ax, ay, from, across, tests);
+      const float high = sample(ix, iy, ax, ay, to, across, tests);
       if (std::isnan(low) || std::isnan(high))
         continue;
       rise += high - low;
       ++pairs;
     }
-    const double run = d_ * grid_.cell();
-    if (pairs > 0)
-      return rise / pairs / (2.0 * run);
-    const float high = sample(ix, iy, ax, ay, d_, 0, tests);
-    if (!std::isnan(high))
-      return (high - centre) / run;
-    const float low = sample(ix, iy, ax, ay, -d_, 0, tests);
-    if (!std::isnan(low))
-      return (centre - low) / run;
-    return 0.0;
+    if (pairs == 0)
+      return std::nullopt;
+    return rise / pairs;
   }
 
   // Mean height of the cell `offset` along (ax, ay) and `across` along the other axis; NaN
   // when empty or outside the grid.
-  float sample(int ix, int iy, int ax, int ay, int offset, int across,
-               std::uint64_t& tests) const {
+  float sample(int ix, int iy, int ax, int ay, int offset, int across, std::uint64_t& tests) const {
     const int cx = ix + ax * offset + ay * across;
     const int cy = iy + ay * offset + ax * across;
     ++tests;
@@ -80,7 +91,7 @@ std::uint64_t mark_slopes(const GroundGrid& grid, const ZoneOptions& options,
       if (grid.count(i) == 0)
         continue;
       steep[static_cast<std::size_t>(i)] =
-          fit.squared_gradient(ix, iy, grid.mean(i), tests) > limit * limit ? 1 : 0;
+          fit.squared_gradient(ix, iy, tests) > limit * limit ? 1 : 0;
     }
   for (int y = 0; y < zone.height(); ++y)
     for (int x = 0; x < zone.width(); ++x) {

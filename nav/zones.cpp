@@ -15,8 +15,8 @@ namespace {
 
 void require_positive(double value, const char* name) {
   if (!std::isfinite(value) || value <= 0.0)
-    throw std::invalid_argument(fmt::format("zone option {} = {}: must be finite and positive",
-                                            name, value));
+    throw std::invalid_argument(
+        fmt::format("zone option {} = {}: must be finite and positive", name, value));
 }
 
 // Unknown where nothing was seen, nothing reliable was seen (when asked), or the point lies
@@ -44,8 +44,8 @@ Image<std::uint8_t> seen_pixels(const Image<std::uint8_t>& zone,
 
 void check_sizes(const TerrainPoints& terrain, int width, int height, const char* what) {
   if (width != terrain.width() || height != terrain.height())
-    throw std::invalid_argument(fmt::format("{}: {}x{} does not fit the {}x{} terrain", what,
-                                            width, height, terrain.width(), terrain.height()));
+    throw std::invalid_argument(fmt::format("{}: {}x{} does not fit the {}x{} terrain", what, width,
+                                            height, terrain.width(), terrain.height()));
 }
 
 void recount(ZoneMap& zones) {
@@ -84,9 +84,12 @@ void validate(const ZoneOptions& options) {
   require_positive(options.cell_m, "cell_m");
   if (!std::isfinite(options.order_tolerance) || options.order_tolerance < 0.0 ||
       options.order_tolerance >= 1.0)
-    throw std::invalid_argument(fmt::format(
-        "zone option order_tolerance = {}: must be within 0..1", options.order_tolerance));
+    throw std::invalid_argument(fmt::format("zone option order_tolerance = {}: must be within 0..1",
+                                            options.order_tolerance));
   require_positive(options.max_range_m, "max_range_m");
+  if (!std::isfinite(options.bridged_gap_m) || options.bridged_gap_m < 0.0)
+    throw std::invalid_argument(fmt::format(
+        "zone option bridged_gap_m = {}: must be finite and not negative", options.bridged_gap_m));
   if (!std::isfinite(options.rover_half_width_m) || options.rover_half_width_m < 0.0)
     throw std::invalid_argument(
         fmt::format("zone option rover_half_width_m = {}: must be finite and not negative",
@@ -101,7 +104,8 @@ ZoneMap find_zones(const TerrainPoints& terrain, ImageView<const std::uint8_t> r
     check_sizes(terrain, reliable.width(), reliable.height(), "find_zones: the reliability mask");
   ZoneMap map{Image<std::uint8_t>(terrain.width(), terrain.height(), 1, 0, memory), {}};
   mark_unknown(terrain, reliable, options, map.zone);
-  std::uint64_t work = detail::mark_out_of_order(terrain, options, map.zone, memory);
+  std::uint64_t work = detail::bridge_small_gaps(terrain, options, map.zone);
+  work += detail::mark_out_of_order(terrain, options, map.zone, memory);
   const detail::GroundGrid grid(terrain, seen_pixels(map.zone, memory), options.cell_m,
                                 options.max_range_m, memory, work);
   work += detail::mark_steps(grid, terrain, options, map.zone, memory);
@@ -126,9 +130,9 @@ void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMa
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template ZoneMap find_zones<M>(const TerrainPoints&, ImageView<const std::uint8_t>,             \
-                                 const ZoneOptions&, M&, std::pmr::memory_resource*);        \
-  template void add_margin<M>(const TerrainPoints&, const ZoneOptions&, ZoneMap&, M&,             \
+  template ZoneMap find_zones<M>(const TerrainPoints&, ImageView<const std::uint8_t>,              \
+                                 const ZoneOptions&, M&, std::pmr::memory_resource*);              \
+  template void add_margin<M>(const TerrainPoints&, const ZoneOptions&, ZoneMap&, M&,              \
                               std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE

@@ -22,12 +22,14 @@ std::uint64_t words(std::size_t bytes) {
 }
 
 /// Cycles of `c ! x` or `c ? x` as compiled occam runs it: the operands are loaded (ldlp of
-/// the message, ldl of the channel word, ldc of the length), then in/out moves w words.
-std::uint64_t channel_cycles(const Node& node, Instruction op, std::size_t bytes) {
+/// the message, ldl of the channel word, ldc of the length), then in/out moves w words. On a
+/// link (`copied_words` 0) in/out only hand the message to the link's DMA engine, which moves
+/// the bytes without the CPU: the base cost alone.
+std::uint64_t channel_cycles(const Node& node, Instruction op, std::uint64_t copied_words) {
   const emulator::CostTable& costs = node.cpu_spec().costs;
   const auto cycles = [&costs](Instruction i) { return static_cast<std::uint64_t>(costs[i].base); };
   return cycles(Instruction::ldlp) + cycles(Instruction::ldl) + cycles(Instruction::ldc) +
-         cycles(op) + words(bytes) * static_cast<std::uint64_t>(costs[op].per_unit);
+         cycles(op) + copied_words * static_cast<std::uint64_t>(costs[op].per_unit);
 }
 
 /// The process executing a channel operation and its node.
@@ -102,7 +104,7 @@ void ChanBase::copy_message(void* destination, const void* source, CopyFn copy) 
 
 void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
   auto [me, node] = here();
-  node.compute_cycles(channel_cycles(node, Instruction::out, bytes));
+  node.compute_cycles(channel_cycles(node, Instruction::out, external() ? 0 : words(bytes)));
   if (external()) {
     output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
     return;
@@ -128,7 +130,7 @@ void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
 
 void ChanBase::input(void* message, std::size_t bytes, CopyFn copy) {
   auto [me, node] = here();
-  node.compute_cycles(channel_cycles(node, Instruction::in, bytes));
+  node.compute_cycles(channel_cycles(node, Instruction::in, external() ? 0 : words(bytes)));
   if (external()) {
     input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
     return;

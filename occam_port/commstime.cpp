@@ -10,26 +10,35 @@ namespace {
 
 using emulator::Instruction;
 
+/// A fixed piece of compiled code: its time on the node, worked out once from the node's
+/// table, as a compiler's code is fixed.
+struct Code {
+  emulator::Kernel* kernel = nullptr;
+  emulator::Tick time = 0;
+};
+
 // What an occam compiler emits around the communications (the channel charges the operand
 // loads and in/out itself): a WHILE TRUE loop ends with a j back, a counted SEQ with lend;
-// successor computes x+1 into a temporary (ldl, adc, stl). The cycles are worked out once
-// from the node's table, as a compiler's code is fixed.
+// successor computes x+1 into a temporary (ldl, adc, stl).
 struct Overheads {
-  std::uint64_t while_loop = 0;
-  std::uint64_t counted_loop = 0;
-  std::uint64_t increment = 0;
+  Code while_loop;
+  Code counted_loop;
+  Code increment;
 
-  explicit Overheads(const emulator::Node& node) {
-    while_loop = node.cycles_of(emulator::InstructionMix().add(Instruction::j));
-    counted_loop = node.cycles_of(emulator::InstructionMix().add(Instruction::lend_loop));
+  explicit Overheads(emulator::Node& node) {
+    const auto code = [&node](const emulator::InstructionMix& mix) {
+      return Code{&node.kernel(), node.cycles(node.cycles_of(mix))};
+    };
+    while_loop = code(emulator::InstructionMix().add(Instruction::j));
+    counted_loop = code(emulator::InstructionMix().add(Instruction::lend_loop));
     emulator::InstructionMix plus_one;
     plus_one.add(Instruction::ldl).add(Instruction::adc).add(Instruction::stl);
-    increment = node.cycles_of(plus_one);
+    increment = code(plus_one);
   }
 };
 
-void charge(std::uint64_t cycles) {
-  emulator::Node::current().compute_cycles(cycles);
+void charge(const Code& code) {
+  code.kernel->consume(code.time);
 }
 
 void prefix(const Overheads& costs, std::int64_t total, Chan<int>& in, Chan<int>& out) {

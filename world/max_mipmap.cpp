@@ -52,6 +52,23 @@ struct AxisRay {
   int step() const { return ahead ? 1 : -1; }
 };
 
+// On a bilinear cell dh/dx varies linearly across the cell, so its extremes lie on the two
+// edges along x, and likewise for y; the gradient is at most the root of the sum of the two
+// squared extremes. Over the whole (continuous) surface the largest cell bound is a Lipschitz
+// constant, since any straight ground segment is a chain of pieces inside cells.
+double bilinear_lipschitz(const HeightField& height) {
+  double steepest_squared = 0.0;
+  for (int j = 0; j + 1 < height.ny(); ++j)
+    for (int i = 0; i + 1 < height.nx(); ++i) {
+      const double along_x = std::max(std::abs(height.at(i + 1, j) - height.at(i, j)),
+                                      std::abs(height.at(i + 1, j + 1) - height.at(i, j + 1)));
+      const double along_y = std::max(std::abs(height.at(i, j + 1) - height.at(i, j)),
+                                      std::abs(height.at(i + 1, j + 1) - height.at(i + 1, j)));
+      steepest_squared = std::max(steepest_squared, along_x * along_x + along_y * along_y);
+    }
+  return std::sqrt(steepest_squared) / height.cell_m();
+}
+
 } // namespace
 
 MaxMipmap::MaxMipmap(const HeightField& height) : height_(&height) {
@@ -64,6 +81,7 @@ MaxMipmap::MaxMipmap(const HeightField& height) : height_(&height) {
       cells.max[static_cast<std::size_t>(j) * cells.width + i] = std::max(
           {height.at(i, j), height.at(i + 1, j), height.at(i, j + 1), height.at(i + 1, j + 1)});
   levels_.push_back(std::move(cells));
+  steepest_gradient_ = bilinear_lipschitz(height);
   while (levels_.back().width > 1 || levels_.back().height > 1) {
     const Level& below = levels_.back();
     Level above{(below.width + 1) / 2, (below.height + 1) / 2, {}};
@@ -76,6 +94,8 @@ MaxMipmap::MaxMipmap(const HeightField& height) : height_(&height) {
       }
     levels_.push_back(std::move(above));
   }
+  for (const Level& level : levels_)
+    views_.push_back(LevelView{level.max.data(), level.width, level.height});
 }
 
 namespace {
@@ -85,26 +105,30 @@ namespace {
 template <bool Descending>
 std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const AxisRay& y, double z0,
                            double dz, double t, double t_end, int level) {
-  // The walk holds the block (bx, by) of the current level that contains the ray at t. Skipping
-  // a block only steps these integers, so the common path has no float-to-int conversion; the
-  // position is converted only when descending into a child. Every step moves forward along
-  // the ray, so the walk ends even where rounding puts t exactly on a face.
+  // The walk holds the block (bx, by) of the current level that contains the ray at t, and the
+  // t where the ray leaves it across each axis. Skipping a block only steps these integers and
+  // recomputes the exit of the axis it crossed, so the common path has no float-to-int
+  // conversion; the position is converted only when descending into a child. Every step moves
+  // forward along the ray, so the walk ends even where rounding puts t exactly on a face.
+  const MaxMipmap::LevelView* levels = mipmap.level_views();
   const int top = mipmap.levels() - 1;
-  const int last_x = mipmap.blocks_x(0) - 1;
-  const int last_y = mipmap.blocks_y(0) - 1;
-  int bx = std::clamp(static_cast<int>(x.at(t)), 0, last_x) >> level;
-  int by = std::clamp(static_cast<int>(y.at(t)), 0, last_y) >> level;
+  int bx = std::clamp(static_cast<int>(x.at(t)), 0, levels[0].width - 1) >> level;
+  int by = std::clamp(static_cast<int>(y.at(t)), 0, levels[0].height - 1) >> level;
+  double tx = x.exit(bx, level);
+  double ty = y.exit(by, level);
   const nav::Image<float>& nodes = mipmap.height_field().nodes();
   for (;;) {
-    const double tx = x.exit(bx, level);
-    const double ty = y.exit(by, level);
+    const MaxMipmap::LevelView& here = levels[level];
     const double t_out = std::min(tx, ty);
     const double t_stop = std::min(t_out, t_end);
-    if (z0 + dz * (Descending ? t_stop : t) <= mipmap.max_height(level, bx, by)) {
+    if (z0 + dz * (Descending ? t_stop : t) <=
+        here.max[static_cast<std::size_t>(by) * here.width + bx]) {
       if (level > 0) {
         --level;
-        bx = x.child(t, bx, level, mipmap.blocks_x(level));
-        by = y.child(t, by, level, mipmap.blocks_y(level));
+        bx = x.child(t, bx, level, levels[level].width);
+        by = y.child(t, by, level, levels[level].height);
+        tx = x.exit(bx, level);
+        ty = y.exit(by, level);
         continue;
       }
       const BilinearCell cell{nodes(bx, by), nodes(bx + 1, by), nodes(bx, by + 1),
@@ -118,19 +142,28 @@ std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const Axis
     t = std::max(t, t_out);
     const int parent_x = bx >> 1;
     const int parent_y = by >> 1;
-    if (tx <= ty)
+    const bool cross_x = tx <= ty;
+    const bool cross_y = ty <= tx;
+    if (cross_x)
       bx += x.step();
-    if (ty <= tx)
+    if (cross_y)
       by += y.step();
-    if (static_cast<unsigned>(bx) >= static_cast<unsigned>(mipmap.blocks_x(level)) ||
-        static_cast<unsigned>(by) >= static_cast<unsigned>(mipmap.blocks_y(level)))
+    if (static_cast<unsigned>(bx) >= static_cast<unsigned>(here.width) ||
+        static_cast<unsigned>(by) >= static_cast<unsigned>(here.height))
       return std::nullopt; // left the grid (rounding at its border)
     // Entering another parent block: test the parent, which may let the ray skip it whole.
     if (level < top && ((bx >> 1) != parent_x || (by >> 1) != parent_y)) {
       ++level;
       bx >>= 1;
       by >>= 1;
+      tx = x.exit(bx, level);
+      ty = y.exit(by, level);
+      continue;
     }
+    if (cross_x)
+      tx = x.exit(bx, level);
+    if (cross_y)
+      ty = y.exit(by, level);
   }
 }
 
@@ -139,13 +172,26 @@ std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const Axis
 std::optional<double> MaxMipmap::first_hit(const Eigen::Vector3d& origin,
                                            const Eigen::Vector3d& direction, double t_max,
                                            int first_level) const {
+  const int level = first_level < 0 ? levels() - 1 : std::min(first_level, levels() - 1);
+  return cast(origin, direction, 0.0, t_max, level);
+}
+
+std::optional<double> MaxMipmap::first_hit_beyond(const Eigen::Vector3d& origin,
+                                                  const Eigen::Vector3d& direction,
+                                                  double t_start, double t_max) const {
+  return cast(origin, direction, std::max(0.0, t_start), t_max, 0);
+}
+
+std::optional<double> MaxMipmap::cast(const Eigen::Vector3d& origin,
+                                      const Eigen::Vector3d& direction, double t_start,
+                                      double t_max, int level) const {
   if (levels_.empty())
     return std::nullopt;
   const HeightField& field = *height_;
   const double per_m = 1.0 / field.cell_m();
   const AxisRay x(origin.x(), direction.x(), field.origin().x(), per_m);
   const AxisRay y(origin.y(), direction.y(), field.origin().y(), per_m);
-  double t = 0.0;
+  double t = t_start;
   double t_end = t_max;
   if (!x.clip(blocks_x(0), t, t_end) || !y.clip(blocks_y(0), t, t_end))
     return std::nullopt;
@@ -157,7 +203,6 @@ std::optional<double> MaxMipmap::first_hit(const Eigen::Vector3d& origin,
     t = std::max(t, (highest - origin.z()) / direction.z());
   if (t > t_end)
     return std::nullopt;
-  const int level = first_level < 0 ? levels() - 1 : std::min(first_level, levels() - 1);
   if (direction.z() < 0.0)
     return walk<true>(*this, x, y, origin.z(), direction.z(), t, t_end, level);
   return walk<false>(*this, x, y, origin.z(), direction.z(), t, t_end, level);

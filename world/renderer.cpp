@@ -1,6 +1,7 @@
 #include "marsokhod/world/renderer.hpp"
 
 #include "ground_truth_recorder.hpp"
+#include "pixel_rays.hpp"
 #include "surface_sampler.hpp"
 
 #include "marsokhod/world/camera_view.hpp"
@@ -131,12 +132,16 @@ nav::Image<std::uint8_t> Renderer::render_eye(const nav::StereoRig& rig, nav::Ey
   GaussianNoise noise(
       substream_seed(options.noise_seed, eye == nav::Eye::left ? kLeftNoise : kRightNoise));
 
+  const std::vector<double> hits =
+      cast_pixel_rays(camera, mipmap_, mipmap_.start_level(camera.centre()));
   nav::Image<std::uint8_t> image(rig.width(), rig.height());
   for (int v = 0; v < image.height(); ++v) {
     std::uint8_t* row = image.row(v);
+    const double* row_hits = hits.data() + static_cast<std::size_t>(v) * image.width();
     for (int u = 0; u < image.width(); ++u) {
       const Eigen::Vector3d direction = camera.ray(u, v);
-      const std::optional<double> hit = shader.cast(direction);
+      const std::optional<double> hit =
+          std::isfinite(row_hits[u]) ? std::optional<double>(row_hits[u]) : std::nullopt;
       if (hit && depth)
         (*depth)(u, v) = static_cast<float>(*hit);
       if (hit && recorder)

@@ -3,6 +3,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <string>
+#include <vector>
+
 using marsokhod::testing::run_marsokhod;
 
 TEST(CommstimeCommand, JsonReportsTheLoopTimeAndHostCost) {
@@ -31,4 +38,31 @@ TEST(CommstimeCommand, UnknownNodeIsAUsageError) {
 TEST(CommstimeCommand, ZeroLoopsIsAUsageError) {
   const auto result = run_marsokhod("commstime --loops 0");
   EXPECT_EQ(result.exit_code, 2);
+}
+
+TEST(CommstimeCommand, TraceIsByteIdenticalJsonWithProcessSlicesAndMemoryCounters) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "marsokhod-commstime-trace";
+  fs::create_directories(dir);
+  std::vector<std::string> texts;
+  for (const char* name : {"first.json", "second.json"}) {
+    const fs::path file = dir / name;
+    const auto result =
+        run_marsokhod("commstime --loops 4 --delta seq --trace '" + file.string() + "'");
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    std::ifstream in(file, std::ios::binary);
+    texts.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  EXPECT_EQ(texts[0], texts[1]);
+  const auto trace = nlohmann::json::parse(texts[0]);
+  std::set<std::string> slices;
+  int counters = 0;
+  for (const auto& event : trace.at("traceEvents")) {
+    if (event.at("ph") == "B")
+      slices.insert(event.at("name").get<std::string>());
+    counters += event.at("ph") == "C";
+  }
+  // The parent that runs the PAR's last branch, and the three branches it starts.
+  EXPECT_EQ(slices.size(), 4U);
+  EXPECT_GE(counters, 2); // the memory track's starting point: in use and high water
 }

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -93,6 +95,46 @@ TEST(LinktestCommand, TracesOfIdenticalRunsAreByteIdenticalJson) {
   for (const auto& event : trace.at("traceEvents"))
     link_slices += event.at("ph") == "B" && event.at("name").get<std::string>().starts_with("out ");
   EXPECT_EQ(link_slices, 6); // three 1000-byte messages each way
+}
+
+TEST(LinktestCommand, TraceHasCpuLinkAndMemoryTracksAndMarksTheColdSpares) {
+  const fs::path file = fs::temp_directory_path() / "marsokhod-linktest-tracks.json";
+  const auto result =
+      run_marsokhod("linktest --bytes 2000 --message-bytes 1000 --trace '" + file.string() + "'");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json trace = nlohmann::json::parse(slurp(file));
+  std::map<int, std::string> node_of_pid;
+  std::set<std::string> tracks; // "node/track"
+  for (const auto& event : trace.at("traceEvents"))
+    if (event.at("ph") == "M" && event.at("name") == "process_name")
+      node_of_pid[event.at("pid").get<int>()] = event.at("args").at("name").get<std::string>();
+  std::set<std::string> powered_off;
+  std::map<std::string, int> memory_samples;
+  for (const auto& event : trace.at("traceEvents")) {
+    const std::string node = node_of_pid[event.at("pid").get<int>()];
+    if (event.at("ph") == "M" && event.at("name") == "thread_name")
+      tracks.insert(node + "/" + event.at("args").at("name").get<std::string>());
+    if (event.at("ph") == "i" && event.at("name") == "power off")
+      powered_off.insert(node);
+    if (event.at("ph") == "C")
+      ++memory_samples[node];
+  }
+  // onboard.toml: module0 and module1 powered, 2 and 3 cold spares; the stream uses the
+  // module0-module1 wire, and each side holds a 1000-byte message buffer in its memory.
+  for (const char* track : {"module0/cpu", "module1/cpu", "module0/memory", "module0/link0 out",
+                            "module0/link0 in", "module1/link0 out", "module1/link0 in"})
+    EXPECT_TRUE(tracks.contains(track)) << track;
+  EXPECT_EQ(powered_off, (std::set<std::string>{"module2", "module3"}));
+  EXPECT_GT(memory_samples["module0"], 2); // the starting point plus the buffer coming and going
+  EXPECT_GT(memory_samples["module1"], 2);
+}
+
+TEST(LinktestCommand, MessageLargerThanTheNodeMemoryIsAMemoryFaultNamingTheProcess) {
+  // onboard.toml modules have 256 KB of external memory: a 300,000-byte buffer cannot exist.
+  const auto result = run_marsokhod("linktest --bytes 300000 --message-bytes 300000");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("memory fault"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("stream_out"), std::string::npos) << result.err;
 }
 
 } // namespace

@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 namespace marsokhod::apps {
 namespace {
@@ -35,15 +38,17 @@ TEST(ScoreZones, CountsObstaclesProhibitedAndFreeGroundProhibitedByBand) {
   truth.obstacles(0, 0) = truth.obstacles(1, 0) = 255;
   // Pixel 0: an obstacle we prohibit by its margin; 1: an obstacle we miss; 2: free ground we
   // prohibit; 3: free ground we leave open.
-  const nav::ZoneMap ours =
-      strip_zones({nav::Zone::margin, nav::Zone::traversable, nav::Zone::step, nav::Zone::traversable});
-  const nav::ZoneMap theirs =
-      strip_zones({nav::Zone::step, nav::Zone::step, nav::Zone::traversable, nav::Zone::traversable});
+  const nav::ZoneMap ours = strip_zones(
+      {nav::Zone::margin, nav::Zone::traversable, nav::Zone::step, nav::Zone::traversable});
+  const nav::ZoneMap theirs = strip_zones(
+      {nav::Zone::step, nav::Zone::step, nav::Zone::traversable, nav::Zone::traversable});
   const BandTable table = score_zones(ours, theirs, truth);
   EXPECT_EQ(table[0].obstacle_pixels, 2U);
   EXPECT_EQ(table[0].obstacles_prohibited, 1U);
   EXPECT_EQ(table[0].free_pixels, 2U);
   EXPECT_EQ(table[0].free_prohibited, 1U);
+  EXPECT_EQ(table[0].free_prohibited_as[static_cast<std::size_t>(nav::Zone::step)], 1U);
+  EXPECT_EQ(table[0].free_prohibited_as[static_cast<std::size_t>(nav::Zone::margin)], 0U);
   EXPECT_EQ(table[1].obstacle_pixels + table[2].free_pixels, 0U);
   // The detector alone: the margin is no hazard.
   const BandTable hazards = score_hazards(ours, truth);
@@ -54,13 +59,35 @@ TEST(ScoreZones, CountsObstaclesProhibitedAndFreeGroundProhibitedByBand) {
 TEST(ScoreZones, FreeGroundInsideTheTruthsMarginAndPixelsOneCameraMissesAreNotScored) {
   world::GroundTruth truth = strip_truth();
   truth.valid(3, 0) = 0; // occluded from the right camera
-  const nav::ZoneMap ours = strip_zones({nav::Zone::step, nav::Zone::step, nav::Zone::step,
-                                         nav::Zone::step});
-  const nav::ZoneMap theirs = strip_zones({nav::Zone::margin, nav::Zone::traversable,
-                                           nav::Zone::traversable, nav::Zone::traversable});
+  const nav::ZoneMap ours =
+      strip_zones({nav::Zone::step, nav::Zone::step, nav::Zone::step, nav::Zone::step});
+  const nav::ZoneMap theirs = strip_zones(
+      {nav::Zone::margin, nav::Zone::traversable, nav::Zone::traversable, nav::Zone::traversable});
   const BandTable table = score_zones(ours, theirs, truth);
   EXPECT_EQ(table[0].free_pixels, 2U);
   EXPECT_EQ(table[0].free_prohibited, 2U);
+}
+
+TEST(ElevationErrors, AreTakenOnFreeGroundWhereTheNavigationHasAPoint) {
+  world::GroundTruth truth = strip_truth();
+  truth.range(3, 0) = 7.0F; // band 6-10 m
+  truth.obstacles(1, 0) = 255;
+  const float kInf = std::numeric_limits<float>::infinity();
+  nav::TerrainPoints ours{nav::Image<float>(4, 1), nav::Image<float>(4, 1), nav::Image<float>(4, 1),
+                          nav::Image<float>(4, 1), 3};
+  for (int x = 0; x < 4; ++x) {
+    truth.elevation(x, 0) = 0.10F;
+    ours.elevation(x, 0) = 0.10F + 0.01F * static_cast<float>(x + 1);
+  }
+  ours.elevation(2, 0) = kInf; // no point: not scored
+  std::array<std::vector<float>, kTerrainBands.size()> errors;
+  collect_elevation_errors(ours, truth, errors);
+  // Pixel 0 (0.01 m off) in 2-6 m; pixel 1 is an obstacle; pixel 3 (0.04 m off) in 6-10 m.
+  ASSERT_EQ(errors[0].size(), 1U);
+  EXPECT_NEAR(errors[0][0], 0.01, 1e-6);
+  ASSERT_EQ(errors[1].size(), 1U);
+  EXPECT_NEAR(errors[1][0], 0.04, 1e-6);
+  EXPECT_TRUE(errors[2].empty());
 }
 
 TEST(CrossesObstacle, IsTrueWhenAnyPathPixelSeesAnObstacle) {
@@ -78,13 +105,13 @@ TEST(Percent, IsNotANumberForAnEmptyWhole) {
 }
 
 TEST(EvalTerrainCommand, ReportsEveryKeyForTwoSmallSites) {
-  const auto result =
-      run_marsokhod("eval terrain --seeds 3..4 --size 64 --terrain-size 16 --json");
+  const auto result = run_marsokhod("eval terrain --seeds 3..4 --size 64 --terrain-size 16 --json");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_EQ(json["seeds"], 2);
-  for (const char* key : {"obstacle_recall", "false_prohibited", "paths_found", "unsafe_paths",
-                          "ground_truth_paths", "bands", "hazard_bands", "per_seed"})
+  for (const char* key :
+       {"obstacle_recall", "false_prohibited", "false_prohibited_by_zone", "paths_found",
+        "unsafe_paths", "ground_truth_paths", "bands", "hazard_bands", "per_seed"})
     EXPECT_TRUE(json.contains(key)) << key;
   EXPECT_EQ(json["bands"].size(), 3U);
   EXPECT_EQ(json["bands"][0]["band_m"], "2-6");

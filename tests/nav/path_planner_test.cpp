@@ -1,6 +1,6 @@
-#include "marsokhod/nav/path_planner.hpp"
-
 #include "nav/terrain_grid.hpp"
+
+#include "marsokhod/nav/path_planner.hpp"
 
 #include <gtest/gtest.h>
 
@@ -41,9 +41,8 @@ void prohibit(ZoneMap& zones, int x, int y) {
 // max(0, |H_i - H_j| - tolerance) + w * ground distance.
 double edge(const TerrainPoints& t, int xa, int ya, int xb, int yb, const EdgeWeights& weights) {
   const double difference = std::abs(double{t.elevation(xb, yb)} - double{t.elevation(xa, ya)});
-  const double climb = difference > weights.flat_tolerance_m
-                           ? difference - weights.flat_tolerance_m
-                           : 0.0;
+  const double climb =
+      difference > weights.flat_tolerance_m ? difference - weights.flat_tolerance_m : 0.0;
   const double run = std::hypot(double{t.forward(xb, yb)} - t.forward(xa, ya),
                                 double{t.left(xb, yb)} - t.left(xa, ya));
   return climb + weights.length_weight * run;
@@ -89,8 +88,8 @@ double unit(std::mt19937_64& random) {
 TEST(SweepRows, GivesTheSameCostsAsDijkstraOnRandomGraphs) {
   std::mt19937_64 random(20240607);
   for (int trial = 0; trial < 40; ++trial) {
-    const GridSpec g{3 + static_cast<int>(random() % 30), 2 + static_cast<int>(random() % 30),
-                     0.05, 2.0};
+    const GridSpec g{3 + static_cast<int>(random() % 30), 2 + static_cast<int>(random() % 30), 0.05,
+                     2.0};
     TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
     ZoneMap zones = all_traversable(t);
     const double blocked = 0.4 * unit(random);
@@ -113,7 +112,8 @@ TEST(SweepRows, GivesTheSameCostsAsDijkstraOnRandomGraphs) {
         if (std::isinf(want))
           ASSERT_TRUE(std::isinf(sweep.cost(x, y))) << trial << ": " << x << "," << y;
         else
-          ASSERT_NEAR(sweep.cost(x, y), want, 1e-5 * (1.0 + want)) << trial << ": " << x << "," << y;
+          ASSERT_NEAR(sweep.cost(x, y), want, 1e-5 * (1.0 + want))
+              << trial << ": " << x << "," << y;
       }
   }
 }
@@ -219,6 +219,27 @@ TEST(PlanPath, ReportsWhyThereIsNoPath) {
   EXPECT_TRUE(no_target.pixels.empty());
 }
 
+TEST(PlanPath, NeverCrossesUnseenGroundLongerThanTheLimit) {
+  // Rows 0..100 see level ground 1 m farther than the grid: between rows 101 and 100 lie
+  // 1.05 m of ground no pixel sees (behind a crater rim, say).
+  const GridSpec g = long_grid();
+  TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
+  for (int y = 0; y <= 100; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      t.forward(x, y) += 1.0F;
+      t.range(x, y) = static_cast<float>(std::hypot(t.forward(x, y), t.left(x, y)));
+    }
+  PlannerOptions options;
+  options.max_edge_m = 0.6;
+  const PathPlan blocked = plan_path(t, all_traversable(t), options);
+  EXPECT_FALSE(blocked.found);
+  EXPECT_NE(blocked.reason.find("can be reached"), std::string::npos) << blocked.reason;
+  options.max_edge_m = 1.1;
+  const PathPlan crossing = plan_path(t, all_traversable(t), options);
+  ASSERT_TRUE(crossing.found) << crossing.reason;
+  EXPECT_NEAR(crossing.cost, 0.02 * 8.0, 1e-4); // 8 m of level ground, the gap included
+}
+
 TEST(PlanPath, ReportsOneRelaxationPerEdgeIntoTheReachableCone) {
   // From one start every row k above it has 2k + 1 reachable pixels; each of row k-1's 2k - 1
   // pixels feeds three pixels above, so rows 1..K examine 3 (1 + 3 + ... + 2K - 1) = 3 K^2
@@ -244,6 +265,9 @@ TEST(PlanPath, RejectsBadOptions) {
   PlannerOptions negative;
   negative.length_weight = -1.0;
   EXPECT_THROW(plan_path(t, all_traversable(t), negative), std::invalid_argument);
+  PlannerOptions no_edge;
+  no_edge.max_edge_m = 0.0;
+  EXPECT_THROW(plan_path(t, all_traversable(t), no_edge), std::invalid_argument);
 }
 
 } // namespace

@@ -1,6 +1,6 @@
-#include "marsokhod/nav/zones.hpp"
-
 #include "nav/terrain_grid.hpp"
+
+#include "marsokhod/nav/zones.hpp"
 
 #include <gtest/gtest.h>
 
@@ -83,8 +83,8 @@ TEST(FindZones, StepOverTheLimitProhibitsTheBoxAndABaselineAroundItThenTheMargin
 
 TEST(FindZones, AStepUnderTheLimitIsPassable) {
   // 0.25 m: under the 0.30 m step, and 0.25 / 0.60 m = 22.6 deg at most under the 25 deg slope.
-  const ZoneMap zones = find_zones(grid_with_box(GridSpec{}, {25, 25, 34, 34, 0.25}), {},
-                                   grid_options());
+  const ZoneMap zones =
+      find_zones(grid_with_box(GridSpec{}, {25, 25, 34, 34, 0.25}), {}, grid_options());
   EXPECT_EQ(zones.count(Zone::traversable), 64U * 64U);
 }
 
@@ -111,6 +111,25 @@ TEST(FindZones, SlopesSteeperThanTheLimitAreProhibited) {
   }
 }
 
+TEST(FindZones, ALowRockWithHiddenGroundBehindItIsNoSlope) {
+  // A 0.20 m block (under the step limit; over the 0.64 m slope baseline its flank reads
+  // atan(0.20 / 0.64) = 17 deg) with the ground behind it hidden, as a rock hides it from the
+  // mast: 10 rows beyond the block unknown across the block and 8 columns either side. The
+  // block's top sees ground 0.32 m in front of it and nothing 0.32 m behind it; measured
+  // one-sided over half the baseline it would read atan(0.20 / 0.32) = 32 deg.
+  const GridSpec g;
+  const Box box{28, 30, 35, 37, 0.20};
+  TerrainPoints t = grid_with_box(g, box);
+  for (int y = box.y0 - 10; y < box.y0; ++y)
+    for (int x = box.x0 - 8; x <= box.x1 + 8; ++x)
+      t.elevation(x, y) = t.forward(x, y) = t.left(x, y) = t.range(x, y) = kInf;
+  const ZoneMap zones = find_zones(t, {}, grid_options());
+  EXPECT_EQ(zones.count(Zone::slope), 0U);
+  EXPECT_EQ(zones.count(Zone::step), 0U);
+  EXPECT_EQ(zones.count(Zone::unknown), 10U * (box.x1 - box.x0 + 17));
+  EXPECT_EQ(zones.count(Zone::traversable), 64U * 64U - zones.count(Zone::unknown));
+}
+
 TEST(FindZones, UnknownGroundIsNotTraversableButGetsNoMargin) {
   TerrainPoints t = grid_terrain(GridSpec{}, [](double, double) { return 0.0; });
   t.elevation(30, 30) = t.forward(30, 30) = t.left(30, 30) = t.range(30, 30) = kInf;
@@ -125,6 +144,7 @@ TEST(FindZones, UnreliablePixelsAreUnknownOnlyWhenAsked) {
   Image<std::uint8_t> reliable(64, 64, 1, 255);
   reliable(10, 50) = 0;
   ZoneOptions options = grid_options();
+  options.bridged_gap_m = 0.0; // a one-pixel gap on level ground would be bridged
   options.unreliable_is_unknown = false;
   EXPECT_EQ(find_zones(t, reliable, options).at(10, 50), Zone::traversable);
   options.unreliable_is_unknown = true;
@@ -206,6 +226,45 @@ TEST(FindZones, ReportsFewerHazardTestsForLessKnownGround) {
   EXPECT_GT(full_meter.count(Work::hazard_test), 0U);
   EXPECT_LT(half_meter.count(Work::hazard_test), full_meter.count(Work::hazard_test));
 }
+// Row 40 of level ground with the pixels first..last unreliable.
+Image<std::uint8_t> gap_in_row_40(int first, int last) {
+  Image<std::uint8_t> reliable(64, 64, 1, 255);
+  for (int x = first; x <= last; ++x)
+    reliable(x, 40) = 0;
+  return reliable;
+}
+
+TEST(FindZones, AnUnreliableGapNarrowerThanTheBridgeOnLevelGroundIsSeenGround) {
+  const TerrainPoints t = grid_terrain(GridSpec{}, [](double, double) { return 0.0; });
+  ZoneOptions options = grid_options();
+  options.bridged_gap_m = 0.25;
+  // 3 pixels: the reliable ends 4 pixels = 0.20 m apart, under 0.25 m.
+  const ZoneMap narrow = find_zones(t, gap_in_row_40(20, 22), options);
+  EXPECT_EQ(narrow.count(Zone::traversable), 64U * 64U);
+  // 5 pixels: the ends 0.30 m apart.
+  const ZoneMap wide = find_zones(t, gap_in_row_40(20, 24), options);
+  EXPECT_EQ(wide.count(Zone::unknown), 5U);
+  EXPECT_EQ(wide.at(20, 40), Zone::unknown);
+  EXPECT_EQ(wide.at(24, 40), Zone::unknown);
+  // Bridging off.
+  options.bridged_gap_m = 0.0;
+  EXPECT_EQ(find_zones(t, gap_in_row_40(20, 22), options).count(Zone::unknown), 3U);
+}
+
+TEST(FindZones, AGapAtTheImageEdgeOrBetweenEndsAStepApartStaysUnknown) {
+  ZoneOptions options = grid_options();
+  options.bridged_gap_m = 0.25;
+  const TerrainPoints level = grid_terrain(GridSpec{}, [](double, double) { return 0.0; });
+  EXPECT_EQ(find_zones(level, gap_in_row_40(0, 1), options).count(Zone::unknown), 2U);
+  EXPECT_EQ(find_zones(level, gap_in_row_40(62, 63), options).count(Zone::unknown), 2U);
+  // The ground right of column 22 is 0.35 m higher: the gap's ends differ by a step.
+  const TerrainPoints stepped = grid_terrain(GridSpec{}, [](double, double left) {
+    return left < testing::grid_left(GridSpec{}, 22) + 0.01 ? 0.35 : 0.0;
+  });
+  const ZoneMap zones = find_zones(stepped, gap_in_row_40(21, 22), options);
+  EXPECT_EQ(zones.at(21, 40), Zone::unknown);
+  EXPECT_EQ(zones.at(22, 40), Zone::unknown);
+}
 
 TEST(FindZones, RejectsBadOptionsAndAMaskOfAnotherSize) {
   const TerrainPoints t = grid_terrain(GridSpec{}, [](double, double) { return 0.0; });
@@ -224,6 +283,9 @@ TEST(FindZones, RejectsBadOptionsAndAMaskOfAnotherSize) {
   ZoneOptions loose = grid_options();
   loose.order_tolerance = 1.5;
   EXPECT_THROW(find_zones(t, {}, loose), std::invalid_argument);
+  ZoneOptions negative_gap = grid_options();
+  negative_gap.bridged_gap_m = -0.1;
+  EXPECT_THROW(find_zones(t, {}, negative_gap), std::invalid_argument);
   const Image<std::uint8_t> small(10, 10, 1, 255);
   EXPECT_THROW(find_zones(t, small, grid_options()), std::invalid_argument);
 }

@@ -163,3 +163,59 @@ TEST(MaxMipmap, HitsBeyondTheRangeLimitAreIgnored) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(MaxMipmap, SteepestGradientOfAPlaneIsItsSlope) {
+  // z = 0.3 x - 0.4 y: gradient (0.3, -0.4), magnitude 0.5 by hand.
+  HeightField field(21, 21, 0.05);
+  for (int j = 0; j < field.ny(); ++j)
+    for (int i = 0; i < field.nx(); ++i)
+      field.at(i, j) = static_cast<float>(0.3 * 0.05 * i - 0.4 * 0.05 * j);
+  EXPECT_NEAR(MaxMipmap(field).steepest_gradient(), 0.5, 1e-5);
+}
+
+TEST(MaxMipmap, NoTwoSurfacePointsDifferMoreThanTheSteepestGradientAllows) {
+  const HeightField field = bumpy_field();
+  const double lipschitz = MaxMipmap(field).steepest_gradient();
+  std::mt19937_64 engine(11);
+  double steepest_seen = 0.0;
+  for (int n = 0; n < 20000; ++n) {
+    const Eigen::Vector2d p(uniform(engine, -1.5, 1.5), uniform(engine, -1.5, 1.5));
+    const Eigen::Vector2d q = p + Eigen::Vector2d(uniform(engine, -0.05, 0.05),
+                                                  uniform(engine, -0.05, 0.05));
+    if (!field.contains(q.x(), q.y()))
+      continue;
+    const double slope = std::abs(field.height(p.x(), p.y()) - field.height(q.x(), q.y())) /
+                         (p - q).norm();
+    EXPECT_LE(slope, lipschitz * (1.0 + 1e-9)) << n;
+    steepest_seen = std::max(steepest_seen, slope);
+  }
+  // The bound is at most sqrt(2) times the true constant (bilinear cells, see max_mipmap.cpp).
+  EXPECT_GT(steepest_seen, lipschitz / std::sqrt(2.0) * 0.8);
+}
+
+TEST(MaxMipmap, FirstHitBeyondAStartBeforeTheHitFindsTheSameHit) {
+  const HeightField field = bumpy_field();
+  const MaxMipmap mipmap(field);
+  std::mt19937_64 engine(5);
+  int compared = 0;
+  for (int n = 0; n < 300; ++n) {
+    const Eigen::Vector3d origin(uniform(engine, -1.4, 1.4), uniform(engine, -1.4, 1.4),
+                                 uniform(engine, 0.35, 1.2));
+    const double azimuth = uniform(engine, 0.0, 2.0 * std::numbers::pi);
+    const double dip = uniform(engine, 0.03, 0.9);
+    const Eigen::Vector3d direction(std::cos(dip) * std::cos(azimuth),
+                                    std::cos(dip) * std::sin(azimuth), -std::sin(dip));
+    const auto full = mipmap.first_hit(origin, direction);
+    if (!full)
+      continue;
+    const auto beyond = mipmap.first_hit_beyond(origin, direction, *full * uniform(engine, 0, 1));
+    ASSERT_TRUE(beyond.has_value()) << n;
+    EXPECT_NEAR(*beyond, *full, 1e-9) << n;
+    ++compared;
+  }
+  EXPECT_GT(compared, 100);
+}
+
+} // namespace

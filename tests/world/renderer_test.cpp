@@ -183,6 +183,31 @@ TEST(Renderer, RejectsImpossibleOptions) {
 
 // Warping the right image by the ground-truth disparity must give back the left image: the
 // images and the ground truth describe the same geometry.
+// Pixels' rays start their walk where the ray below ended when the terrain's slope bound
+// allows it; the ground truth must still be each centre ray's own first hit.
+TEST(Renderer, EveryPixelRecordsTheFirstHitOfItsOwnCentreRay) {
+  const GeneratedSite& site = generated_site();
+  const nav::StereoRig rig;
+  const world::LitSurface surface(site.terrain,
+                                  world::lighting_preset(world::LightPreset::high_sun));
+  const auto frame = site.renderer.render_with_ground_truth(rig, site.placement, surface);
+  const world::CameraView left(rig, nav::Eye::left, site.placement);
+  const Eigen::Isometry3d world_to_level = site.placement.level_to_world.inverse();
+  int hits = 0;
+  for (int v = 0; v < rig.height(); ++v)
+    for (int u = 0; u < rig.width(); ++u) {
+      const Eigen::Vector3d direction = left.ray(u, v);
+      const auto hit = site.renderer.acceleration().first_hit(left.centre(), direction);
+      ASSERT_EQ(hit.has_value(), frame.truth.visible(u, v) != 0) << u << "," << v;
+      if (!hit)
+        continue;
+      ++hits;
+      const Eigen::Vector3d level = world_to_level * (left.centre() + *hit * direction);
+      EXPECT_NEAR(frame.truth.range(u, v), level.head<2>().norm(), 1e-4) << u << "," << v;
+    }
+  EXPECT_GT(hits, rig.width() * rig.height() / 2);
+}
+
 TEST(Renderer, RightImageWarpedByGroundTruthDisparityReproducesTheLeftForEveryLight) {
   const GeneratedSite& site = generated_site();
   const nav::StereoRig rig;

@@ -79,4 +79,45 @@ private:
   Node* node_ = nullptr;
 };
 
+// The ready queues are on every process switch: inline.
+
+inline void Cpu::push_back(Process& p) {
+  Queue& q = queues_[static_cast<int>(p.priority())];
+  p.next_ready_ = nullptr;
+  if (q.tail == nullptr) {
+    q.head = &p;
+  } else {
+    q.tail->next_ready_ = &p;
+  }
+  q.tail = &p;
+  ++ready_count_;
+}
+
+inline void Cpu::push_front(Process& p) {
+  Queue& q = queues_[static_cast<int>(p.priority())];
+  p.next_ready_ = q.head;
+  q.head = &p;
+  if (q.tail == nullptr) {
+    q.tail = &p;
+  }
+  ++ready_count_;
+}
+
+inline Process* Cpu::pop() {
+  for (Queue& q : queues_) {
+    Process* p = q.head;
+    if (p == nullptr) {
+      continue;
+    }
+    q.head = p->next_ready_;
+    if (q.head == nullptr) {
+      q.tail = nullptr;
+    }
+    p->next_ready_ = nullptr;
+    --ready_count_;
+    return p;
+  }
+  return nullptr;
+}
+
 } // namespace marsokhod::emulator

@@ -161,10 +161,11 @@ public:
     }
     consume_slowly(duration);
   }
-  /// Suspends the current process until wake().
-  void block(const WaitInfo& why);
+  /// Suspends the current process until wake(). (`why` by value: two registers, where a
+  /// reference would reload a just-written temporary through memory.)
+  void block(WaitInfo why);
   /// As block(), but also woken at `deadline`; true if the deadline woke it.
-  bool block_until(Tick deadline, const WaitInfo& why);
+  bool block_until(Tick deadline, WaitInfo why);
   /// Makes a blocked process ready; does nothing if it is not blocked.
   void wake(Process& process);
   /// Puts the current process behind the other ready processes of its priority.

@@ -6,6 +6,7 @@
 #include "marsokhod/nav/zones.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <memory_resource>
 #include <string>
 
@@ -33,13 +34,19 @@ struct PlannerOptions {
   double flat_tolerance_m = 0.02;
   /// Cost per radian between the destination's bearing and the mission heading.
   double heading_weight = 0.5;
+  /// Longest ground step between the points of two consecutive rows the path may take: a
+  /// longer one crosses ground the mast cannot see (behind a crater rim, in a pit), which may
+  /// hide a step. Level ground seen by the 256-pixel rig is some 0.35 m a row at 12 m.
+  double max_edge_m = 0.6;
 };
 
 /// The weight of one edge of the graph: max(0, |H_i - H_j| - flat_tolerance_m) plus
-/// length_weight times the ground distance between the two points.
+/// length_weight times the ground distance between the two points; no edge where that
+/// distance exceeds max_edge_m.
 struct EdgeWeights {
   double length_weight = 0.02;
   double flat_tolerance_m = 0.02;
+  double max_edge_m = std::numeric_limits<double>::infinity();
 };
 
 /// Throws std::invalid_argument naming the first option out of range.
@@ -59,8 +66,8 @@ inline constexpr std::int8_t kNoPredecessor = 2;
 /// first_row..start.y over the graph of fig. 1 (each traversable pixel of row y reached from
 /// the three pixels x-1, x, x+1 of row y+1, edges weighted as EdgeWeights says).
 struct RowSweep {
-  Image<float> cost;            ///< +inf where unreachable or outside the swept rows
-  Image<std::int8_t> from;      ///< -1, 0, +1 or kNoPredecessor
+  Image<float> cost;       ///< +inf where unreachable or outside the swept rows
+  Image<std::int8_t> from; ///< -1, 0, +1 or kNoPredecessor
   PixelPoint start;
   int first_row = 0;
 };

@@ -20,7 +20,8 @@ class AltState;
 /// transputer's in/out microcode does with the channel word. Each side is charged on its node
 /// what compiled occam executes: the operand loads (ldlp, ldl, ldc: 4 cycles) and the data-book
 /// in/out (2w+19 cycles for w words). A channel placed on a link carries its
-/// messages through the link engines instead (an external channel).
+/// messages through the link engines instead (an external channel); there in/out cost only
+/// their base (19 cycles), since the link's DMA engine moves the bytes.
 class ChanBase : public emulator::WaitTarget {
 public:
   using CopyFn = void (*)(void* destination, const void* source);

@@ -1,0 +1,73 @@
+#pragma once
+
+// The hot path of a process switch, inline so that blocking, the choice of the next process
+// and the fiber jump happen in one frame: fewer calls between two fibers means fewer returns
+// whose prediction the stack switch spoils.
+
+#include "kernel_impl.hpp"
+
+#include <utility>
+
+namespace marsokhod::emulator {
+
+inline void Kernel::Impl::switch_to(boost::context::fiber& target, boost::context::fiber& save) {
+  save_slot = &save;
+  boost::context::fiber from = std::move(target).resume();
+  // Whoever switched to us said where its own context belongs.
+  *save_slot = std::move(from);
+  after_switch();
+}
+
+inline void Kernel::Impl::after_switch() {
+  if (zombie != nullptr) {
+    processes.remove_and_delete(std::exchange(zombie, nullptr));
+  }
+}
+
+inline void Kernel::Impl::grant(Cpu& cpu, Process& next) {
+  cpu.running_ = &next;
+  next.state_ = ProcessState::running;
+  next.slice_end_ = kNever;
+  const CpuTiming& timing = cpu.timing_;
+  if (next.priority_ == Priority::low && timing.timeslice > 0) {
+    // The timeslice clock ticks at multiples of the period; a low-priority process is
+    // descheduled at a chunk boundary once it has seen `slices_before_deschedule` ticks
+    // since it got the CPU. The CPU keeps the next tick so that a switch costs no division.
+    if (owner->now_ >= cpu.next_tick_) {
+      cpu.next_tick_ = (owner->now_ / timing.timeslice + 1) * timing.timeslice;
+    }
+    next.slice_end_ = cpu.next_tick_ + (timing.slices_before_deschedule - 1) * timing.timeslice;
+  }
+  cpu.busy_since_ = owner->now_;
+  if (owner->trace_ != nullptr) {
+    owner->trace_->begin_slice(cpu.track_, owner->now_, next.name_);
+  }
+}
+
+inline void Kernel::Impl::release(Cpu& cpu) {
+  if (cpu.running_ == nullptr) {
+    return;
+  }
+  cpu.busy_total_ += owner->now_ - cpu.busy_since_;
+  cpu.running_ = nullptr;
+  if (owner->trace_ != nullptr) {
+    owner->trace_->end_slice(cpu.track_, owner->now_);
+  }
+}
+
+inline // Hands the CPU of the current process to the next ready one; returns it (nullptr: idle).
+    Process*
+    Kernel::Impl::leave_cpu(Process& p) {
+  Cpu& cpu = *p.cpu_;
+  release(cpu);
+  cpu.preempt_requested_ = false;
+  Process* next = cpu.pop();
+  if (next != nullptr) {
+    grant(cpu, *next);
+  }
+  owner->current_ = next;
+  ++owner->switches_;
+  return next;
+}
+
+} // namespace marsokhod::emulator
