@@ -134,7 +134,7 @@ void prepare_folder(const fs::path& folder) {
 
 void print_summary(const nav::NavigationResult& result, const fs::path& out, double seconds) {
   if (result.found()) {
-    fmt::print("path found: start {:.2f} m, fracture points [{}] m, target {:.2f} m\n",
+    fmt::print("path found: start {:.2f} m, fracture points [{:.2f}] m, target {:.2f} m\n",
                result.drive.start_m, fmt::join(result.drive.fracture_m, ", "),
                result.drive.target_m);
     for (const nav::DriveCommand& c : result.drive.commands)

@@ -46,6 +46,22 @@ struct PixelGeometry {
   }
 };
 
+// std::hypot rounded to float, without its cost on nearly every pixel: sqrt(x^2 + y^2) lies
+// within a few double ulps of the exact value, as does hypot, so where every value within
+// 1e-15 (relative) of it rounds to the same float, hypot's does too. Near a float rounding
+// boundary, or where the squares might lose precision, hypot decides.
+float ground_distance(double x, double y) {
+  const double squared = x * x + y * y;
+  if (!(squared > 1e-200 && squared < 1e200))
+    return static_cast<float>(std::hypot(x, y));
+  const double estimate = std::sqrt(squared);
+  const auto rounded = static_cast<float>(estimate);
+  if (static_cast<float>(estimate * (1.0 - 1e-15)) == rounded &&
+      static_cast<float>(estimate * (1.0 + 1e-15)) == rounded)
+    return rounded;
+  return static_cast<float>(std::hypot(x, y));
+}
+
 } // namespace
 
 template <class Meter>
@@ -54,11 +70,10 @@ TerrainPoints reconstruct_terrain(ImageView<const float> disparity, const Stereo
                                   std::pmr::memory_resource* memory) {
   if (disparity.width() != rig.width() || disparity.height() != rig.height() ||
       disparity.channels() != 1)
-    throw std::invalid_argument(
-        fmt::format("reconstruct_terrain: a {}x{} disparity map (channels {}) does not fit the "
-                    "{}x{} rig",
-                    disparity.width(), disparity.height(), disparity.channels(), rig.width(),
-                    rig.height()));
+    throw std::invalid_argument(fmt::format(
+        "reconstruct_terrain: a {}x{} disparity map (channels {}) does not fit the "
+        "{}x{} rig",
+        disparity.width(), disparity.height(), disparity.channels(), rig.width(), rig.height()));
   const int width = disparity.width();
   const int height = disparity.height();
   TerrainPoints terrain = unknown_terrain(width, height, memory);
@@ -81,7 +96,7 @@ TerrainPoints reconstruct_terrain(ImageView<const float> disparity, const Stereo
       x_row[u] = static_cast<float>(point.x());
       y_row[u] = static_cast<float>(point.y());
       z_row[u] = static_cast<float>(point.z());
-      r_row[u] = static_cast<float>(std::hypot(point.x(), point.y()));
+      r_row[u] = ground_distance(point.x(), point.y());
       ++converted;
     }
     detail::report(meter, Work::range_pixel, converted);
@@ -92,7 +107,7 @@ TerrainPoints reconstruct_terrain(ImageView<const float> disparity, const Stereo
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template TerrainPoints reconstruct_terrain<M>(ImageView<const float>, const StereoRig&,         \
+  template TerrainPoints reconstruct_terrain<M>(ImageView<const float>, const StereoRig&,          \
                                                 const Attitude&, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE

@@ -17,23 +17,37 @@ struct Bounds {
   bool empty() const { return min_x > max_x; }
 };
 
-bool binned(const TerrainPoints& terrain, ImageView<const std::uint8_t> include, double max_range,
-            int x, int y) {
-  return include(x, y) != 0 && terrain.known(x, y) && terrain.range(x, y) <= max_range;
-}
+// The bounds of the binned points and, in row-major order, the pixels that hold them (y *
+// width + x), so that binning need not test every pixel again.
+struct Binned {
+  Bounds bounds;
+  std::pmr::vector<std::int32_t> pixels;
+};
 
-Bounds bounds_of(const TerrainPoints& terrain, ImageView<const std::uint8_t> include,
-                 double max_range) {
-  Bounds b;
-  for (int y = 0; y < terrain.height(); ++y)
-    for (int x = 0; x < terrain.width(); ++x)
-      if (binned(terrain, include, max_range, x, y)) {
-        b.min_x = std::min<double>(b.min_x, terrain.forward(x, y));
-        b.max_x = std::max<double>(b.max_x, terrain.forward(x, y));
-        b.min_y = std::min<double>(b.min_y, terrain.left(x, y));
-        b.max_y = std::max<double>(b.max_y, terrain.left(x, y));
-      }
-  return b;
+Binned binned_pixels(const TerrainPoints& terrain, ImageView<const std::uint8_t> include,
+                     double max_range, std::pmr::memory_resource* memory) {
+  Binned out{Bounds{}, std::pmr::vector<std::int32_t>(memory)};
+  Bounds& b = out.bounds;
+  const int width = terrain.width();
+  const std::ptrdiff_t channels = include.channels();
+  out.pixels.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(terrain.height()));
+  for (int y = 0; y < terrain.height(); ++y) {
+    const float* forward = terrain.forward.row(y);
+    const float* left = terrain.left.row(y);
+    const float* elevation = terrain.elevation.row(y);
+    const float* range = terrain.range.row(y);
+    const std::uint8_t* included = include.row(y);
+    for (int x = 0; x < width; ++x) {
+      if (included[x * channels] == 0 || !std::isfinite(elevation[x]) || !(range[x] <= max_range))
+        continue;
+      b.min_x = std::min<double>(b.min_x, forward[x]);
+      b.max_x = std::max<double>(b.max_x, forward[x]);
+      b.min_y = std::min<double>(b.min_y, left[x]);
+      b.max_y = std::max<double>(b.max_y, left[x]);
+      out.pixels.push_back(y * width + x);
+    }
+  }
+  return out;
 }
 
 } // namespace
@@ -43,7 +57,8 @@ GroundGrid::GroundGrid(const TerrainPoints& terrain, ImageView<const std::uint8_
                        std::uint64_t& work)
     : cell_(cell_m), pixel_cell_(terrain.width(), terrain.height(), 1, -1, memory),
       highest_(memory), lowest_(memory), sum_(memory), count_(memory) {
-  const Bounds b = bounds_of(terrain, include, max_range_m);
+  const Binned binned = binned_pixels(terrain, include, max_range_m, memory);
+  const Bounds& b = binned.bounds;
   if (b.empty())
     return;
   // The first point sits in the middle of its cell, so points on a regular lattice of the
@@ -57,21 +72,24 @@ GroundGrid::GroundGrid(const TerrainPoints& terrain, ImageView<const std::uint8_
   lowest_.assign(cells, kInfinity);
   sum_.assign(cells, 0.0F);
   count_.assign(cells, 0);
-  for (int y = 0; y < terrain.height(); ++y)
-    for (int x = 0; x < terrain.width(); ++x) {
-      if (!binned(terrain, include, max_range_m, x, y))
-        continue;
-      const int ix = std::clamp(static_cast<int>(std::floor((terrain.forward(x, y) - x0_) / cell_)), 0, nx_ - 1);
-      const int iy = std::clamp(static_cast<int>(std::floor((terrain.left(x, y) - y0_) / cell_)), 0, ny_ - 1);
-      const auto i = static_cast<std::size_t>(index(ix, iy));
-      const float h = terrain.elevation(x, y);
-      highest_[i] = count_[i] == 0 ? h : std::max(highest_[i], h);
-      lowest_[i] = count_[i] == 0 ? h : std::min(lowest_[i], h);
-      sum_[i] += h;
-      ++count_[i];
-      pixel_cell_(x, y) = static_cast<std::int32_t>(i);
-      work += 2;
-    }
+  const float* forward = terrain.forward.data();
+  const float* left = terrain.left.data();
+  const float* elevation = terrain.elevation.data();
+  std::int32_t* pixel_cell = pixel_cell_.data();
+  for (const std::int32_t p : binned.pixels) {
+    const auto at = static_cast<std::size_t>(p);
+    const int ix =
+        std::clamp(static_cast<int>(std::floor((forward[at] - x0_) / cell_)), 0, nx_ - 1);
+    const int iy = std::clamp(static_cast<int>(std::floor((left[at] - y0_) / cell_)), 0, ny_ - 1);
+    const auto i = static_cast<std::size_t>(index(ix, iy));
+    const float h = elevation[at];
+    highest_[i] = count_[i] == 0 ? h : std::max(highest_[i], h);
+    lowest_[i] = count_[i] == 0 ? h : std::min(lowest_[i], h);
+    sum_[i] += h;
+    ++count_[i];
+    pixel_cell[at] = static_cast<std::int32_t>(i);
+  }
+  work += 2 * binned.pixels.size();
 }
 
 } // namespace marsokhod::nav::detail

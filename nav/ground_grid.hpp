@@ -27,6 +27,8 @@ public:
 
   /// Cell of a pixel's ground point, or -1 when the pixel was not binned.
   int cell_of(int x, int y) const { return pixel_cell_(x, y); }
+  /// cell_of for the pixels of row y, in order.
+  const std::int32_t* cells_of_row(int y) const { return pixel_cell_.row(y); }
   int index(int ix, int iy) const { return iy * nx_ + ix; }
   bool inside(int ix, int iy) const { return ix >= 0 && iy >= 0 && ix < nx_ && iy < ny_; }
 
@@ -34,7 +36,11 @@ public:
   const std::pmr::vector<float>& highest() const { return highest_; }
   const std::pmr::vector<float>& lowest() const { return lowest_; }
   /// Mean elevation of a cell (NaN when empty) and its number of points.
-  float mean(int i) const { return count_[static_cast<std::size_t>(i)] > 0 ? sum_[static_cast<std::size_t>(i)] / count_[static_cast<std::size_t>(i)] : kNoHeight; }
+  float mean(int i) const {
+    return count_[static_cast<std::size_t>(i)] > 0
+               ? sum_[static_cast<std::size_t>(i)] / count_[static_cast<std::size_t>(i)]
+               : kNoHeight;
+  }
   int count(int i) const { return count_[static_cast<std::size_t>(i)]; }
 
   static constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();

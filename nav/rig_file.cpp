@@ -1,12 +1,11 @@
 #include "rig_fields.hpp"
+#include "toml_document.hpp"
 
 #include "marsokhod/nav/camera.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include <fstream>
-#include <sstream>
 #include <string_view>
 
 namespace marsokhod::nav {
@@ -19,10 +18,10 @@ constexpr std::string_view kMisalignmentTable = "rig.right_misalignment";
 /// Reads a rig file and reports every problem as a RigError naming the file and the line.
 class RigFileReader {
 public:
-  explicit RigFileReader(const std::filesystem::path& path) : path_(path) {}
+  explicit RigFileReader(const std::filesystem::path& path) : document_(path, "rig") {}
 
   RigParameters read() const {
-    const toml::table document = parse(read_text());
+    const toml::table document = document_.parse();
     const toml::node* rig = nullptr;
     for (auto&& [key, node] : document) {
       if (key.str() != kRigTable)
@@ -31,7 +30,7 @@ public:
       rig = &node;
     }
     if (rig == nullptr)
-      throw RigError(fmt::format("{}: no [rig] table", path_.string()));
+      document_.fail("no [rig] table");
     RigParameters parameters;
     read_table(*rig, kRigTable, parameters);
     return parameters;
@@ -39,36 +38,7 @@ public:
 
 private:
   [[noreturn]] void fail(const toml::source_region& where, const std::string& problem) const {
-    throw RigError(
-        fmt::format("{}:{}:{}: {}", path_.string(), where.begin.line, where.begin.column, problem));
-  }
-
-  std::string read_text() const {
-    std::ifstream in(path_, std::ios::binary);
-    if (!in || std::filesystem::is_directory(path_))
-      throw RigError(fmt::format("{}: cannot open rig file", path_.string()));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  toml::table parse(const std::string& text) const {
-    try {
-      return toml::parse(text, path_.string());
-    } catch (const toml::parse_error& error) {
-      fail(error.source(), fmt::format("TOML syntax error: {} in \"{}\"", error.description(),
-                                       line_of(text, error.source().begin.line)));
-    }
-  }
-
-  // The offending line, so a syntax error also shows the key it is about.
-  static std::string line_of(const std::string& text, toml::source_index line) {
-    std::istringstream lines(text);
-    std::string current;
-    for (toml::source_index n = 1; std::getline(lines, current); ++n)
-      if (n == line)
-        return current;
-    return {};
+    document_.fail(where, problem);
   }
 
   const toml::table& as_table(const toml::node& node, std::string_view name) const {
@@ -142,18 +112,12 @@ private:
     return "nothing";
   }
 
-  std::filesystem::path path_;
+  detail::TomlDocument<RigError> document_;
 };
 
-// Shortest text that reads back to the same double, always a TOML float.
-std::string toml_float(double value) {
-  std::string text = fmt::format("{}", value);
-  if (text.find_first_of(".eE") == std::string::npos)
-    text += ".0";
-  return text;
-}
-
 } // namespace
+
+using detail::toml_float;
 
 StereoRig StereoRig::load(const std::filesystem::path& path) {
   const RigParameters parameters = RigFileReader(path).read();

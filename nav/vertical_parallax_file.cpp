@@ -1,5 +1,7 @@
 // The calibration file: a vertical parallax map as TOML (docs/navigation.md, "Calibration file").
 
+#include "toml_document.hpp"
+
 #include "marsokhod/nav/vertical_parallax.hpp"
 
 #include <fmt/format.h>
@@ -7,7 +9,6 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <string_view>
@@ -24,10 +25,11 @@ constexpr int kMinSide = 16;
 /// has one, the line and column.
 class CalibrationFileReader {
 public:
-  explicit CalibrationFileReader(const std::filesystem::path& path) : path_(path) {}
+  explicit CalibrationFileReader(const std::filesystem::path& path)
+      : document_(path, "calibration") {}
 
   VerticalParallaxMap read() const {
-    const toml::table document = parse(read_text());
+    const toml::table document = document_.parse();
     const toml::table* table = nullptr;
     for (auto&& [key, node] : document) {
       if (key.str() != kTable)
@@ -38,31 +40,13 @@ public:
       table = node.as_table();
     }
     if (table == nullptr)
-      throw CalibrationError(fmt::format("{}: no [{}] table", path_.string(), kTable));
+      document_.fail(fmt::format("no [{}] table", kTable));
     return read_map(*table);
   }
 
 private:
   [[noreturn]] void fail(const toml::source_region& where, const std::string& problem) const {
-    throw CalibrationError(
-        fmt::format("{}:{}:{}: {}", path_.string(), where.begin.line, where.begin.column, problem));
-  }
-
-  std::string read_text() const {
-    std::ifstream in(path_, std::ios::binary);
-    if (!in || std::filesystem::is_directory(path_))
-      throw CalibrationError(fmt::format("{}: cannot open calibration file", path_.string()));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  toml::table parse(const std::string& text) const {
-    try {
-      return toml::parse(text, path_.string());
-    } catch (const toml::parse_error& error) {
-      fail(error.source(), fmt::format("TOML syntax error: {}", error.description()));
-    }
+    document_.fail(where, problem);
   }
 
   VerticalParallaxMap read_map(const toml::table& table) const {
@@ -78,9 +62,9 @@ private:
       map.coefficients[i] = read_number(table, kCoefficientKeys[i]);
     const double largest = map.largest_shift();
     if (largest > kMaxVerticalShift)
-      throw CalibrationError(fmt::format("{}: the map shifts rows by up to {:.1f}, more than the "
-                                         "{} rows a calibration may correct",
-                                         path_.string(), largest, kMaxVerticalShift));
+      document_.fail(fmt::format("the map shifts rows by up to {:.1f}, more than the {} rows a "
+                                 "calibration may correct",
+                                 largest, kMaxVerticalShift));
     return map;
   }
 
@@ -94,8 +78,7 @@ private:
   const toml::node& require(const toml::table& table, std::string_view key) const {
     const toml::node* node = table.get(key);
     if (node == nullptr)
-      throw CalibrationError(
-          fmt::format("{}: key '{}.{}' is missing", path_.string(), kTable, key));
+      document_.fail(fmt::format("key '{}.{}' is missing", kTable, key));
     return *node;
   }
 
@@ -121,18 +104,12 @@ private:
     return value;
   }
 
-  std::filesystem::path path_;
+  detail::TomlDocument<CalibrationError> document_;
 };
 
-// Shortest text that reads back to the same double, always a TOML float.
-std::string toml_float(double value) {
-  std::string text = fmt::format("{}", value);
-  if (text.find_first_of(".eE") == std::string::npos)
-    text += ".0";
-  return text;
-}
-
 } // namespace
+
+using detail::toml_float;
 
 VerticalParallaxMap load_vertical_parallax(const std::filesystem::path& path) {
   return CalibrationFileReader(path).read();

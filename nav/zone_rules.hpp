@@ -43,6 +43,10 @@ std::uint64_t mark_steps(const GroundGrid& grid, const TerrainPoints& terrain,
 std::uint64_t mark_slopes(const GroundGrid& grid, const ZoneOptions& options,
                           Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);
 
+/// Sets `verdict` on the traversable pixels whose cell is flagged (non-zero) in `flagged`.
+void mark_flagged_cells(const GroundGrid& grid, const std::pmr::vector<std::uint8_t>& flagged,
+                        Zone verdict, Image<std::uint8_t>& zone);
+
 /// Marks Zone::margin on traversable pixels whose cell lies within the rover's half-width of a
 /// cell holding a step or slope pixel.
 std::uint64_t grow_margin(const GroundGrid& grid, const ZoneOptions& options,

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <vector>
 
 namespace marsokhod::nav::detail {
 namespace {
@@ -12,7 +13,12 @@ namespace {
 // difference of the mean heights of the two outer lines over their distance.
 class PlaneFit {
 public:
-  PlaneFit(const GroundGrid& grid, int d) : grid_(grid), d_(d) {}
+  PlaneFit(const GroundGrid& grid, int d, std::pmr::memory_resource* memory)
+      : grid_(grid), d_(d), means_(static_cast<std::size_t>(grid.nx()) * grid.ny(), memory) {
+    // Each cell's mean is read by up to twelve neighbours: divide once.
+    for (std::size_t i = 0; i < means_.size(); ++i)
+      means_[i] = grid.mean(static_cast<int>(i));
+  }
 
   // Squared gradient of the plane at cell (ix, iy).
   double squared_gradient(int ix, int iy, std::uint64_t& tests) const {
@@ -68,11 +74,12 @@ private:
     ++tests;
     if (!grid_.inside(cx, cy))
       return GroundGrid::kNoHeight;
-    return grid_.mean(grid_.index(cx, cy));
+    return means_[static_cast<std::size_t>(grid_.index(cx, cy))];
   }
 
   const GroundGrid& grid_;
   int d_;
+  std::pmr::vector<float> means_;
 };
 
 } // namespace
@@ -83,7 +90,7 @@ std::uint64_t mark_slopes(const GroundGrid& grid, const ZoneOptions& options,
     return 0;
   std::uint64_t tests = 0;
   const double limit = std::tan(options.max_slope_deg * std::numbers::pi / 180.0);
-  const PlaneFit fit(grid, cells_within(grid, 0.5 * options.slope_baseline_m));
+  const PlaneFit fit(grid, cells_within(grid, 0.5 * options.slope_baseline_m), memory);
   std::pmr::vector<std::uint8_t> steep(static_cast<std::size_t>(grid.nx()) * grid.ny(), 0, memory);
   for (int iy = 0; iy < grid.ny(); ++iy)
     for (int ix = 0; ix < grid.nx(); ++ix) {
@@ -93,13 +100,7 @@ std::uint64_t mark_slopes(const GroundGrid& grid, const ZoneOptions& options,
       steep[static_cast<std::size_t>(i)] =
           fit.squared_gradient(ix, iy, tests) > limit * limit ? 1 : 0;
     }
-  for (int y = 0; y < zone.height(); ++y)
-    for (int x = 0; x < zone.width(); ++x) {
-      const int cell = grid.cell_of(x, y);
-      if (cell >= 0 && steep[static_cast<std::size_t>(cell)] != 0 &&
-          zone(x, y) == static_cast<std::uint8_t>(Zone::traversable))
-        zone(x, y) = static_cast<std::uint8_t>(Zone::slope);
-    }
+  mark_flagged_cells(grid, steep, Zone::slope, zone);
   return tests;
 }
 

@@ -66,21 +66,25 @@ std::uint64_t mark_steps(const GroundGrid& grid, const TerrainPoints& terrain,
   const Extremes window =
       window_extremes(grid, cells_within(grid, options.step_baseline_m), memory, comparisons);
   const auto limit = static_cast<float>(options.max_step_m);
-  for (int y = 0; y < zone.height(); ++y)
+  const auto traversable = static_cast<std::uint8_t>(Zone::traversable);
+  const std::ptrdiff_t channels = zone.channels();
+  for (int y = 0; y < zone.height(); ++y) {
+    const std::int32_t* cells = grid.cells_of_row(y);
+    const float* elevation = terrain.elevation.row(y);
+    std::uint8_t* row = zone.row(y);
     for (int x = 0; x < zone.width(); ++x) {
-      const int cell = grid.cell_of(x, y);
-      if (cell < 0 || zone(x, y) != static_cast<std::uint8_t>(Zone::traversable))
+      std::uint8_t& pixel = row[x * channels];
+      if (cells[x] < 0 || pixel != traversable)
         continue;
       // Some point of the window is higher, or lower, than this one by more than the limit
       // (an empty window holds -inf and +inf, which the tests below reject).
-      const float own = terrain.elevation(x, y);
-      const auto i = static_cast<std::size_t>(cell);
-      const float highest = window.highest[i];
-      const float lowest = window.lowest[i];
+      const float own = elevation[x];
+      const auto i = static_cast<std::size_t>(cells[x]);
       comparisons += 2;
-      if ((highest - own > limit) || (own - lowest > limit))
-        zone(x, y) = static_cast<std::uint8_t>(Zone::step);
+      if ((window.highest[i] - own > limit) || (own - window.lowest[i] > limit))
+        pixel = static_cast<std::uint8_t>(Zone::step);
     }
+  }
   return comparisons;
 }
 

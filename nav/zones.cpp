@@ -24,21 +24,32 @@ void require_positive(double value, const char* name) {
 void mark_unknown(const TerrainPoints& terrain, ImageView<const std::uint8_t> reliable,
                   const ZoneOptions& options, Image<std::uint8_t>& zone) {
   const bool use_reliable = options.unreliable_is_unknown && !reliable.empty();
-  for (int y = 0; y < terrain.height(); ++y)
+  const auto traversable = static_cast<std::uint8_t>(Zone::traversable);
+  const auto unknown = static_cast<std::uint8_t>(Zone::unknown);
+  for (int y = 0; y < terrain.height(); ++y) {
+    const float* elevation = terrain.elevation.row(y);
+    const float* range = terrain.range.row(y);
+    std::uint8_t* out = zone.row(y);
     for (int x = 0; x < terrain.width(); ++x) {
-      const bool unknown = !terrain.known(x, y) || (use_reliable && reliable(x, y) == 0) ||
-                           terrain.range(x, y) > options.max_range_m;
-      zone(x, y) = static_cast<std::uint8_t>(unknown ? Zone::unknown : Zone::traversable);
+      const bool not_seen = !std::isfinite(elevation[x]) || (use_reliable && reliable(x, y) == 0) ||
+                            range[x] > options.max_range_m;
+      out[x] = not_seen ? unknown : traversable;
     }
+  }
 }
 
 // The pixels the rules may look at: everything not unknown.
 Image<std::uint8_t> seen_pixels(const Image<std::uint8_t>& zone,
                                 std::pmr::memory_resource* memory) {
   Image<std::uint8_t> seen(zone.width(), zone.height(), 1, 0, memory);
-  for (int y = 0; y < zone.height(); ++y)
+  const auto unknown = static_cast<std::uint8_t>(Zone::unknown);
+  const std::ptrdiff_t channels = zone.channels();
+  for (int y = 0; y < zone.height(); ++y) {
+    const std::uint8_t* row = zone.row(y);
+    std::uint8_t* out = seen.row(y);
     for (int x = 0; x < zone.width(); ++x)
-      seen(x, y) = zone(x, y) != static_cast<std::uint8_t>(Zone::unknown) ? 1 : 0;
+      out[x] = row[x * channels] != unknown ? 1 : 0;
+  }
   return seen;
 }
 

@@ -4,10 +4,10 @@
 set -eu
 marsokhod="$1"
 out="$2"
-world_dir="$out/world-seed1"
-nav_dir="$out/nav-seed1"
+world_dir="$out/world-seed3"
+nav_dir="$out/nav-seed3"
 
-"$marsokhod" world --seed 1 --size 256 --out "$world_dir"
+"$marsokhod" world --seed 3 --size 256 --out "$world_dir"
 echo
 "$marsokhod" nav "$world_dir/left.pgm" "$world_dir/right.pgm" --scene "$world_dir/scene.json" \
   --out "$nav_dir"
