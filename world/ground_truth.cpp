@@ -55,7 +55,7 @@ GroundTruthRecorder::GroundTruthRecorder(GroundTruth& truth, const Terrain& terr
                                          const nav::Image<float>* right_depth)
     : truth_(&truth), terrain_(&terrain), mipmap_(&mipmap), right_(&right),
       world_to_level_(level_to_world.inverse()), tolerance_m_(occlusion_tolerance_m),
-      right_first_level_(mipmap.start_level(right.centre())), right_depth_(right_depth) {}
+      right_depth_(right_depth) {}
 
 void GroundTruthRecorder::record(int u, int v, const Eigen::Vector3d& hit_world) {
   const Eigen::Vector3d level = world_to_level_ * hit_world;
@@ -110,8 +110,10 @@ bool GroundTruthRecorder::hidden_from_right(const Eigen::Vector3d& hit_world,
   const Sight sight = judge_by_right_depth(pixel, distance);
   if (sight != Sight::unsure)
     return sight == Sight::hidden;
-  return mipmap_
-      ->first_hit(right_->centre(), towards / distance, distance - tolerance_m_, right_first_level_)
+  // The sight line walked from the point back towards the camera: the same segment, but the
+  // walk starts beside the point in the finest level and, rising, soon climbs above every
+  // block (or above the highest point of the site) instead of descending to it from the top.
+  return mipmap_->first_hit_beyond(hit_world, -towards / distance, tolerance_m_, distance)
       .has_value();
 }
 

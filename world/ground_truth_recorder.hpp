@@ -34,7 +34,6 @@ private:
   const CameraView* right_;
   Eigen::Isometry3d world_to_level_;
   double tolerance_m_;
-  int right_first_level_;
   const nav::Image<float>* right_depth_;
 };
 
