@@ -26,46 +26,51 @@ BandCounts& BandCounts::operator+=(const BandCounts& other) {
   return *this;
 }
 
-BandTable score_zones(const nav::ZoneMap& zones, const nav::ZoneMap& truth_zones,
-                      const world::GroundTruth& truth) {
+namespace {
+
+// Calls score(x, y, counts) for every pixel of the zone map that both cameras see, with the
+// counts of its true range band; pixels outside every band are left out.
+template <class Score>
+BandTable score_bands(const nav::ZoneMap& zones, const world::GroundTruth& truth, Score score) {
   BandTable table{};
   for (int y = 0; y < zones.height(); ++y)
     for (int x = 0; x < zones.width(); ++x) {
       const std::optional<std::size_t> band = band_of(truth.range(x, y));
       if (truth.valid(x, y) == 0 || !band)
         continue;
-      BandCounts& counts = table[*band];
-      const bool prohibited = !zones.traversable(x, y);
-      if (truth.obstacles(x, y) != 0) {
-        ++counts.obstacle_pixels;
-        counts.obstacles_prohibited += prohibited ? 1 : 0;
-      } else if (truth_zones.traversable(x, y)) {
-        ++counts.free_pixels;
-        counts.free_prohibited += prohibited ? 1 : 0;
-        counts.free_prohibited_as[zones.zone(x, y) % nav::kZoneKinds] += prohibited ? 1 : 0;
-      }
+      score(x, y, table[*band]);
     }
   return table;
 }
 
-BandTable score_hazards(const nav::ZoneMap& zones, const world::GroundTruth& truth) {
-  BandTable table{};
-  for (int y = 0; y < zones.height(); ++y)
-    for (int x = 0; x < zones.width(); ++x) {
-      const std::optional<std::size_t> band = band_of(truth.range(x, y));
-      if (truth.valid(x, y) == 0 || !band)
-        continue;
-      BandCounts& counts = table[*band];
-      const bool hazard = zones.hazard(x, y);
-      if (truth.obstacles(x, y) != 0) {
-        ++counts.obstacle_pixels;
-        counts.obstacles_prohibited += hazard ? 1 : 0;
-      } else {
-        ++counts.free_pixels;
-        counts.free_prohibited += hazard ? 1 : 0;
-      }
+} // namespace
+
+BandTable score_zones(const nav::ZoneMap& zones, const nav::ZoneMap& truth_zones,
+                      const world::GroundTruth& truth) {
+  return score_bands(zones, truth, [&](int x, int y, BandCounts& counts) {
+    const bool prohibited = !zones.traversable(x, y);
+    if (truth.obstacles(x, y) != 0) {
+      ++counts.obstacle_pixels;
+      counts.obstacles_prohibited += prohibited ? 1 : 0;
+    } else if (truth_zones.traversable(x, y)) {
+      ++counts.free_pixels;
+      counts.free_prohibited += prohibited ? 1 : 0;
+      counts.free_prohibited_as[zones.zone(x, y) % nav::kZoneKinds] += prohibited ? 1 : 0;
     }
-  return table;
+  });
+}
+
+BandTable score_hazards(const nav::ZoneMap& zones, const world::GroundTruth& truth) {
+  return score_bands(zones, truth, [&](int x, int y, BandCounts& counts) {
+    const bool hazard = zones.hazard(x, y);
+    if (truth.obstacles(x, y) != 0) {
+      ++counts.obstacle_pixels;
+      counts.obstacles_prohibited += hazard ? 1 : 0;
+    } else {
+      ++counts.free_pixels;
+      counts.free_prohibited += hazard ? 1 : 0;
+    }
+  });
 }
 
 nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,

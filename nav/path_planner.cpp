@@ -149,7 +149,7 @@ PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
                      memory);
   const RowSweep sweep =
       sweep_rows(terrain, zones, *start, *first_row,
-                 EdgeWeights{options.length_weight, options.flat_tolerance_m, options.max_edge_m},
+                 edge_weights(options),
                  meter, memory);
   const std::optional<Destination> destination = choose_destination(terrain, sweep, options);
   if (!destination)

@@ -142,7 +142,7 @@ TEST(PlanPath, PathCostIsTheSumOfItsEdgeWeights) {
   const PlannerOptions options;
   const PathPlan plan = plan_path(t, all_traversable(t), options);
   ASSERT_TRUE(plan.found) << plan.reason;
-  const EdgeWeights weights{options.length_weight, options.flat_tolerance_m};
+  const EdgeWeights weights = edge_weights(options);
   double sum = 0.0;
   for (std::size_t i = 1; i < plan.pixels.size(); ++i) {
     const PixelPoint a = plan.pixels[i - 1];

@@ -49,6 +49,11 @@ struct EdgeWeights {
   double max_edge_m = std::numeric_limits<double>::infinity();
 };
 
+/// The edge weights a plan with these options uses.
+inline EdgeWeights edge_weights(const PlannerOptions& options) {
+  return EdgeWeights{options.length_weight, options.flat_tolerance_m, options.max_edge_m};
+}
+
 /// Throws std::invalid_argument naming the first option out of range.
 void validate(const PlannerOptions& options);
 
