@@ -8,7 +8,9 @@
 namespace marsokhod::apps {
 namespace {
 
-void print_error(const std::string& message) { fmt::print(stderr, "marsokhod: error: {}\n", message); }
+void print_error(const std::string& message) {
+  fmt::print(stderr, "marsokhod: error: {}\n", message);
+}
 
 } // namespace
 

@@ -90,7 +90,8 @@ Evaluation add_stereo_evaluation(CLI::App& eval) {
   app->add_option("--levels", options.stereo.pyramid_levels, "Pyramid layers (0 = automatic)")
       ->check(CLI::Range(0, nav::kMaxPyramidLevels))
       ->capture_default_str();
-  app->add_option("--band", options.stereo.search_band, "Search band around the coarse estimate, px")
+  app->add_option("--band", options.stereo.search_band,
+                  "Search band around the coarse estimate, px")
       ->check(CLI::Range(0, 64))
       ->capture_default_str();
   app->add_option("--fill", cli->fill, "Fill policy of unreliable pixels: background or none")
@@ -117,13 +118,17 @@ using EvaluationFactory = Evaluation (*)(CLI::App& eval);
 // Every evaluation, in --help order.
 const std::vector<EvaluationFactory> kEvaluations = {
     add_stereo_evaluation,
-    [](CLI::App& eval) { const Command c = add_terrain_evaluation(eval); return Evaluation{c.app, c.run}; },
+    [](CLI::App& eval) {
+      const Command c = add_terrain_evaluation(eval);
+      return Evaluation{c.app, c.run};
+    },
 };
 
 } // namespace
 
 Command make_eval_command(CLI::App& parent) {
-  CLI::App* eval = parent.add_subcommand("eval", "Score the navigation software against ground truth.");
+  CLI::App* eval =
+      parent.add_subcommand("eval", "Score the navigation software against ground truth.");
   eval->require_subcommand(1);
   auto evaluations = std::make_shared<std::vector<Evaluation>>();
   for (EvaluationFactory factory : kEvaluations)

@@ -1,3 +1,5 @@
 #include "command.hpp"
 
-int main(int argc, char** argv) { return marsokhod::apps::run_command_line(argc, argv); }
+int main(int argc, char** argv) {
+  return marsokhod::apps::run_command_line(argc, argv);
+}

@@ -1,11 +1,12 @@
 // `marsokhod nav LEFT RIGHT --out DIR`: one navigation cycle on a stereo pair (docs/navigation.md).
 
 #include "command.hpp"
+#include "nav_outputs.hpp"
+
 #include "marsokhod/nav/camera.hpp"
 #include "marsokhod/nav/image_io.hpp"
 #include "marsokhod/nav/navigation.hpp"
 #include "marsokhod/nav/vertical_parallax.hpp"
-#include "nav_outputs.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -124,14 +125,6 @@ nav::Attitude scene_attitude(const fs::path& path) {
   }
 }
 
-void prepare_folder(const fs::path& folder) {
-  std::error_code error;
-  fs::create_directories(folder, error);
-  if (error || !fs::is_directory(folder))
-    throw CommandError(fmt::format("{}: cannot create the output folder{}", folder.string(),
-                                   error ? ": " + error.message() : std::string()));
-}
-
 void print_summary(const nav::NavigationResult& result, const fs::path& out, double seconds) {
   if (result.found()) {
     fmt::print("path found: start {:.2f} m, fracture points [{:.2f}] m, target {:.2f} m\n",
@@ -161,14 +154,14 @@ int run_nav(const NavCli& cli) {
   const nav::StereoRig rig = rig_for(cli, left.width(), left.height());
   right = aligned_right(cli, std::move(right));
   nav::NavigationOptions options;
-  options.attitude = cli.scene_file ? scene_attitude(*cli.scene_file)
-                                     : nav::Attitude{cli.pitch_deg, cli.roll_deg};
+  options.attitude =
+      cli.scene_file ? scene_attitude(*cli.scene_file) : nav::Attitude{cli.pitch_deg, cli.roll_deg};
   options.planner.heading_deg = cli.heading_deg;
   options.zones.max_step_m = cli.max_step_m;
   std::optional<nav::Image<float>> given;
   if (cli.disparity_file)
     given = read_disparity(*cli.disparity_file, left.width(), left.height());
-  prepare_folder(cli.out);
+  prepare_output_folder(cli.out);
 
   const auto start = std::chrono::steady_clock::now();
   nav::NavigationResult result;
@@ -209,12 +202,13 @@ Command make_nav_command(CLI::App& parent) {
   app->add_option("--out", cli->out, "Output folder (created if missing)")->required();
   app->add_option("--rig", cli->rig_file,
                   "Rig TOML file (docs/formats.md); default: the paper's rig at the images' size");
-  CLI::Option* pitch = app->add_option("--pitch", cli->pitch_deg, "Rover pitch from the inclinometer, deg, nose up +")
-      ->check(CLI::Range(-45.0, 45.0))
-      ->capture_default_str();
+  CLI::Option* pitch = app->add_option("--pitch", cli->pitch_deg,
+                                       "Rover pitch from the inclinometer, deg, nose up +")
+                           ->check(CLI::Range(-45.0, 45.0))
+                           ->capture_default_str();
   CLI::Option* roll = app->add_option("--roll", cli->roll_deg, "Rover roll, deg, right side down +")
-      ->check(CLI::Range(-45.0, 45.0))
-      ->capture_default_str();
+                          ->check(CLI::Range(-45.0, 45.0))
+                          ->capture_default_str();
   app->add_option("--heading", cli->heading_deg,
                   "Mission heading relative to the rover's, deg, counter-clockwise +")
       ->check(CLI::Range(-180.0, 180.0))

@@ -1,6 +1,7 @@
 #include "nav_outputs.hpp"
 
 #include "command.hpp"
+
 #include "marsokhod/nav/colormap.hpp"
 #include "marsokhod/nav/image_io.hpp"
 

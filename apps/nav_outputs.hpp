@@ -32,8 +32,8 @@ nlohmann::ordered_json path_json(const nav::NavigationResult& result);
 
 /// Writes every output of `marsokhod nav` into `folder` (which must exist) and returns output
 /// name -> file path. Throws CommandError naming a file that cannot be written.
-std::map<std::string, std::filesystem::path> write_navigation_outputs(
-    const std::filesystem::path& folder, const nav::Image<std::uint8_t>& left,
-    const nav::Image<float>& disparity, const nav::NavigationResult& result);
+std::map<std::string, std::filesystem::path>
+write_navigation_outputs(const std::filesystem::path& folder, const nav::Image<std::uint8_t>& left,
+                         const nav::Image<float>& disparity, const nav::NavigationResult& result);
 
 } // namespace marsokhod::apps

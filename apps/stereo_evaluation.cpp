@@ -102,7 +102,7 @@ int search_range(const StereoEvaluationOptions& options, const StereoPairEntry& 
 void write_outputs(const StereoEvaluationOptions& options, const std::string& name,
                    const nav::Image<float>& disparity) {
   const fs::path dir = options.out_dir;
-  fs::create_directories(dir);
+  prepare_output_folder(dir);
   nav::write_image(dir / (name + "_disparity.pfm"), disparity.view());
   nav::ColormapOptions colour;
   colour.min_value = 0.0F;

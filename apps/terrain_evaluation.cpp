@@ -2,8 +2,10 @@
 // (docs/navigation.md, "Evaluation on synthetic terrain").
 
 #include "command.hpp"
+#include "terrain_pictures.hpp"
 #include "terrain_scoring.hpp"
 
+#include "marsokhod/nav/image_io.hpp"
 #include "marsokhod/nav/navigation.hpp"
 #include "marsokhod/world/renderer.hpp"
 #include "marsokhod/world/terrain.hpp"
@@ -16,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <regex>
@@ -33,6 +36,7 @@ struct TerrainCli {
   double terrain_size = world::TerrainSettings{}.size_m;
   bool oracle = false;
   bool json = false;
+  std::string pictures; ///< folder for one comparison picture per seed, empty for none
 };
 
 struct SeedRange {
@@ -69,6 +73,16 @@ struct SeedOutcome {
   double seconds = 0.0;
 };
 
+void write_picture(const std::string& folder, std::uint64_t seed, const TerrainComparison& site) {
+  const std::filesystem::path path =
+      std::filesystem::path(folder) / fmt::format("seed-{}.png", seed);
+  try {
+    nav::write_image(path, terrain_comparison_picture(site).view());
+  } catch (const std::exception& error) {
+    throw CommandError(error.what());
+  }
+}
+
 SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainCli& cli) {
   world::TerrainSettings settings;
   settings.seed = seed;
@@ -99,13 +113,18 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainCli& cli) {
   outcome.found = result.found();
   outcome.reason = result.reason();
   outcome.unsafe = result.found() && crosses_obstacle(result.plan, frame.truth);
-  collect_elevation_errors(result.terrain, frame.truth, outcome.elevation_errors);
+  collect_elevation_errors(result.terrain, result.zones, frame.truth, outcome.elevation_errors);
 
   const nav::TerrainPoints truth_terrain =
       nav::reconstruct_terrain(frame.truth.disparity, rig, placement.attitude);
   const nav::ZoneMap truth_zones = ground_truth_zones(truth_terrain, frame.truth, options.zones);
   outcome.bands = score_zones(result.zones, truth_zones, frame.truth);
-  outcome.truth_found = nav::plan_path(truth_terrain, truth_zones, options.planner).found;
+  const nav::PathPlan truth_plan = nav::plan_path(truth_terrain, truth_zones, options.planner);
+  outcome.truth_found = truth_plan.found;
+  if (!cli.pictures.empty())
+    write_picture(
+        cli.pictures, seed,
+        {frame.images.left, result.zones, result.plan, truth_zones, truth_plan, frame.truth});
   return outcome;
 }
 
@@ -245,7 +264,7 @@ void print_table(const TerrainCli& cli, const std::vector<SeedOutcome>& outcomes
   fmt::print("paths found {} of {} seeds; ground truth has a path on {}, of which found {}; "
              "unsafe paths {}\n",
              s.found, outcomes.size(), s.truth_found, s.found_where_truth, s.unsafe);
-  fmt::print("elevation error on free ground, cm, median / 90 % / 99 %:");
+  fmt::print("elevation error on judged free ground, cm, median / 90 % / 99 %:");
   for (std::size_t b = 0; b < s.elevation_errors.size(); ++b) {
     std::vector<float> errors = s.elevation_errors[b];
     fmt::print(" {} m {} / {} / {};", band_name(kTerrainBands[b]),
@@ -265,9 +284,11 @@ Command add_terrain_evaluation(CLI::App& eval) {
       "terrain", "Render synthetic sites, navigate, and score the prohibited zones and paths "
                  "against ground truth.");
   app->footer(
-      "Scoring: the ground-truth zones are the world's obstacle map at each visible pixel, grown "
-      "by the rover's half-width on the same ground grid the navigation grows its own (pixels "
-      "the left camera does not see are unknown). Over the pixels both cameras see, by true "
+      "Scoring: the ground-truth zones are the world's obstacle map at each pixel both cameras "
+      "see, "
+      "grown by the rover's half-width on the same ground grid the navigation grows its own "
+      "(pixels the two cameras do not both see are unknown). Over the pixels both cameras see, by "
+      "true "
       "ground range: obstacle recall = ground-truth obstacle pixels the navigation prohibits "
       "(any zone but traversable); false prohibition = pixels traversable in the ground-truth "
       "zones that the navigation prohibits (free pixels inside the truth's margin are not "
@@ -291,9 +312,14 @@ Command add_terrain_evaluation(CLI::App& eval) {
   app->add_flag("--oracle", cli->oracle,
                 "Navigate on the ground-truth disparity instead of matching (scores the hazard "
                 "rules alone)");
+  app->add_option("--pictures", cli->pictures,
+                  "Folder (created if missing) for one picture per seed, seed-N.png: left image, "
+                  "zones judged against ground truth, ground-truth zones");
   app->add_flag("--json", cli->json, "Print one JSON object instead of a table");
   return {app, [cli] {
             const SeedRange range = parse_seeds(cli->seeds);
+            if (!cli->pictures.empty())
+              prepare_output_folder(cli->pictures);
             std::vector<SeedOutcome> outcomes;
             const std::uint64_t count = range.last - range.first + 1;
             for (std::uint64_t seed = range.first; seed <= range.last; ++seed) {

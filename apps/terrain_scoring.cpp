@@ -79,7 +79,7 @@ nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::
   for (int y = 0; y < terrain.height(); ++y)
     for (int x = 0; x < terrain.width(); ++x) {
       nav::Zone zone = nav::Zone::traversable;
-      if (truth.visible(x, y) == 0 || !terrain.known(x, y))
+      if (truth.valid(x, y) == 0 || !terrain.known(x, y))
         zone = nav::Zone::unknown;
       else if (truth.obstacles(x, y) != 0)
         zone = nav::Zone::step;
@@ -89,12 +89,14 @@ nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::
   return zones;
 }
 
-void collect_elevation_errors(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
+void collect_elevation_errors(const nav::TerrainPoints& terrain, const nav::ZoneMap& zones,
+                              const world::GroundTruth& truth,
                               std::array<std::vector<float>, kTerrainBands.size()>& errors) {
   for (int y = 0; y < terrain.height(); ++y)
     for (int x = 0; x < terrain.width(); ++x) {
       const std::optional<std::size_t> band = band_of(truth.range(x, y));
-      if (!band || truth.valid(x, y) == 0 || truth.obstacles(x, y) != 0 || !terrain.known(x, y))
+      if (!band || truth.valid(x, y) == 0 || truth.obstacles(x, y) != 0 || !terrain.known(x, y) ||
+          zones.at(x, y) == nav::Zone::unknown)
         continue;
       errors[*band].push_back(std::abs(terrain.elevation(x, y) - truth.elevation(x, y)));
     }

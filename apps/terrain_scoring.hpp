@@ -46,14 +46,18 @@ BandTable score_zones(const nav::ZoneMap& zones, const nav::ZoneMap& truth_zones
 /// obstacles, every other visible pixel counting as free.
 BandTable score_hazards(const nav::ZoneMap& zones, const world::GroundTruth& truth);
 
-/// The zones ground truth implies: unknown where nothing is visible, step where the seen point
+/// The zones ground truth implies: unknown where the two cameras do not both see the point
+/// (ground truth `valid`: no stereo pair can know what one camera alone sees, so a path through
+/// it is no path the rover could have found), step where the seen point
 /// is on an obstacle, then the rover's margin as the navigation adds it.
 nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
                                 const nav::ZoneOptions& options);
 
 /// Elevation errors (|ours - truth|, metres) per band over the pixels both cameras see on free
-/// ground (no obstacle) where the navigation has a point, appended to `errors`.
-void collect_elevation_errors(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
+/// ground (no obstacle) where the navigation has a point that its zone rules judged (not
+/// unknown), appended to `errors`.
+void collect_elevation_errors(const nav::TerrainPoints& terrain, const nav::ZoneMap& zones,
+                              const world::GroundTruth& truth,
                               std::array<std::vector<float>, kTerrainBands.size()>& errors);
 
 /// True when a pixel of the path sees a ground-truth obstacle.

@@ -34,6 +34,9 @@ public:
   void run(const BandLayout& layout, const std::uint16_t* costs, const std::uint16_t* jumps,
            int small_step, BandChoice& choice);
 
+  /// S of every cell of the last band run, laid out as its costs were.
+  const std::uint16_t* aggregated() const { return forward_.data(); }
+
 private:
   void forward_pass(const BandLayout& layout, const std::uint16_t* costs,
                     const std::uint16_t* jumps, int small_step);

@@ -1,20 +1,45 @@
 #include "marsokhod/nav/consistency_check.hpp"
 
+#include "band_layout.hpp"
 #include "consistency_lines.hpp"
+#include "right_view.hpp"
 #include "work_report.hpp"
 
+#include <algorithm>
+#include <memory_resource>
 #include <stdexcept>
 
 namespace marsokhod::nav {
 
-void claim_right_pixels(std::span<const int> left, std::span<const std::uint16_t> left_cost,
-                        std::span<int> right, std::span<std::uint16_t> right_cost) {
-  if (left_cost.size() != left.size() || right.size() != left.size() ||
-      right_cost.size() != left.size())
-    throw std::invalid_argument("claim_right_pixels: spans differ in length");
-  detail::claim_right(detail::StridedLine<int>{left.data(), 1},
-                      detail::StridedLine<std::uint16_t>{left_cost.data(), 1},
-                      static_cast<int>(left.size()), right.data(), right_cost.data());
+std::vector<int> right_view_disparities(std::span<const std::uint16_t> aggregated, int width,
+                                        int candidates) {
+  if (width < 1 || candidates < 1 ||
+      aggregated.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(candidates))
+    throw std::invalid_argument(
+        "right_view_disparities: aggregated must hold width x candidates values");
+  std::pmr::memory_resource* memory = std::pmr::get_default_resource();
+  detail::BandLayout layout(memory);
+  const auto tiles = static_cast<std::size_t>(detail::tile_count(width));
+  const std::pmr::vector<int> low(tiles, 0, memory);
+  const std::pmr::vector<int> high(tiles, candidates - 1, memory);
+  layout.lay_out(width, {0, candidates - 1}, low, high);
+  // Every lane of the band holds the same line; cells beyond a pixel's reach stay unused.
+  constexpr auto lanes = static_cast<std::size_t>(detail::kBandRows);
+  std::pmr::vector<std::uint16_t> cells(layout.total() * lanes, 0, memory);
+  for (int x = 0; x < width; ++x)
+    for (int k = 0; k < layout.cells(x); ++k) {
+      const std::uint16_t s =
+          aggregated[static_cast<std::size_t>(x * candidates + layout.first(x) + k)];
+      std::fill_n(cells.begin() + static_cast<std::ptrdiff_t>((layout.offset(x) + k) * lanes),
+                  lanes, s);
+    }
+  std::pmr::vector<std::int16_t> right(static_cast<std::size_t>(width) * lanes, 0, memory);
+  std::pmr::vector<std::int16_t> best(right.size(), 0, memory);
+  detail::choose_right_view(layout, cells.data(), right.data(), best.data());
+  std::vector<int> out(static_cast<std::size_t>(width));
+  for (std::size_t r = 0; r < out.size(); ++r)
+    out[r] = right[r * lanes];
+  return out;
 }
 
 template <class Meter>

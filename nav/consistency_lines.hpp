@@ -19,27 +19,6 @@ struct StridedLine {
   T operator[](int x) const { return values[static_cast<std::ptrdiff_t>(x) * stride]; }
 };
 
-/// See claim_right_pixels(): right and right_cost have `width` entries.
-template <class Disparity, class Claim>
-void claim_right(StridedLine<Disparity> left, StridedLine<std::uint16_t> cost, int width,
-                 Claim* right, std::uint16_t* right_cost) {
-  std::fill(right, right + width, Claim{-1});
-  std::fill(right_cost, right_cost + width, std::numeric_limits<std::uint16_t>::max());
-  for (int x = 0; x < width; ++x) {
-    const int d = left[x];
-    const int r = x - d;
-    if (static_cast<unsigned>(r) >= static_cast<unsigned>(width))
-      continue;
-    // Claims on one right pixel arrive in increasing disparity: on equal costs the first,
-    // smaller, disparity keeps the pixel.
-    const std::uint16_t c = cost[x];
-    if (c < right_cost[r]) {
-      right_cost[r] = c;
-      right[r] = static_cast<Claim>(d);
-    }
-  }
-}
-
 /// See check_left_right(); returns the number of reliable pixels.
 template <class Disparity, class Claim>
 int check_line(StridedLine<Disparity> left, const Claim* right, int width, int tolerance,

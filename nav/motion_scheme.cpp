@@ -16,12 +16,12 @@ void validate(const MotionConfig& c) {
                          c.normal_min_m > 0.0 && c.normal_max_m >= c.normal_min_m &&
                          c.escape_min_m > 0.0 && c.escape_max_m >= c.escape_min_m;
   if (!ranges_ok)
-    throw std::invalid_argument(fmt::format(
-        "motion scheme: path ranges {}-{} m and {}-{} m must be positive and ordered",
-        c.normal_min_m, c.normal_max_m, c.escape_min_m, c.escape_max_m));
+    throw std::invalid_argument(
+        fmt::format("motion scheme: path ranges {}-{} m and {}-{} m must be positive and ordered",
+                    c.normal_min_m, c.normal_max_m, c.escape_min_m, c.escape_max_m));
   if (!std::isfinite(c.turn_step_deg) || c.turn_step_deg <= 0.0 || c.turn_step_deg > 180.0)
-    throw std::invalid_argument(fmt::format(
-        "motion scheme: turn step {} deg must be within (0, 180]", c.turn_step_deg));
+    throw std::invalid_argument(
+        fmt::format("motion scheme: turn step {} deg must be within (0, 180]", c.turn_step_deg));
 }
 
 double sign_towards(Side side) {

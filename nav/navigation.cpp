@@ -15,9 +15,6 @@ namespace {
 
 /// Room for rocks nearer than the ground seen in the bottom row.
 constexpr double kNearRockAllowance = 1.25;
-/// Ground may rise towards the rover and rocks stand on it: below a column of 1.15 times the
-/// level ground's disparity the right camera is taken not to see what the left one sees.
-constexpr double kCoverageAllowance = 1.15;
 
 void check_images_fit(ImageView<const std::uint8_t> left, ImageView<const std::uint8_t> right,
                       const StereoRig& rig) {
@@ -35,9 +32,12 @@ void check_images_fit(ImageView<const std::uint8_t> left, ImageView<const std::u
 // (NavigationOptions::featureless_grey_range) below the horizon whose ground the right camera
 // sees; +inf elsewhere. Where the level ground's disparity exceeds the column (x - d < 0) the
 // ground, and anything standing on it, lies outside the right image: a match found there can
-// only be a wrong, smaller disparity that the left-right check happened to confirm
-// (kCoverageAllowance widens the strip). At or above the horizon only the sky, or the top of
-// something taller than the mast, can be seen; the sky must not become terrain.
+// only be a wrong, smaller disparity that the left-right check happened to confirm. Rocks and
+// rising ground just right of that strip are hidden from the right camera too; their wrong
+// matches are left to the left-right check and the columns' ordering test, which see them,
+// rather than to a wider strip, which would also hide the ground beside it. At or above the horizon
+// only the sky, or the top of something taller than the mast, can be seen; the sky must not become
+// terrain.
 Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<float>& disparity,
                                const StereoRig& rig, const NavigationOptions& options,
                                std::pmr::memory_resource* memory) {
@@ -55,7 +55,7 @@ Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<f
     const double last_d = rig.ground_disparity(last, y, options.attitude);
     for (int x = 0; x < left.width(); ++x) {
       const double ground_d = first_d + (last_d - first_d) * (x / std::max(last, 1.0));
-      if (textured(x, y) == 0 || ground_d <= 0.0 || x < kCoverageAllowance * ground_d)
+      if (textured(x, y) == 0 || ground_d <= 0.0 || x < ground_d)
         seeable(x, y) = std::numeric_limits<float>::infinity();
     }
   }
@@ -87,8 +87,11 @@ NavigationResult navigate_disparity(ImageView<const float> disparity,
   validate(options.zones);
   validate(options.planner);
   validate(options.drive);
-  NavigationResult result{StereoResult{Image<float>(memory), Image<std::uint8_t>(memory), 0,
-                                       std::pmr::vector<StereoLayerStats>(memory), {}},
+  NavigationResult result{StereoResult{Image<float>(memory),
+                                       Image<std::uint8_t>(memory),
+                                       0,
+                                       std::pmr::vector<StereoLayerStats>(memory),
+                                       {}},
                           reconstruct_terrain(disparity, rig, options.attitude, meter, memory),
                           {},
                           {},
@@ -121,13 +124,12 @@ NavigationResult navigate(ImageView<const std::uint8_t> left, ImageView<const st
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template NavigationResult navigate<M>(ImageView<const std::uint8_t>,                            \
-                                        ImageView<const std::uint8_t>, const StereoRig&,          \
+  template NavigationResult navigate<M>(ImageView<const std::uint8_t>,                             \
+                                        ImageView<const std::uint8_t>, const StereoRig&,           \
                                         const NavigationOptions&, M&, std::pmr::memory_resource*); \
-  template NavigationResult navigate_disparity<M>(ImageView<const float>,                         \
-                                                  ImageView<const std::uint8_t>, const StereoRig&, \
-                                                  const NavigationOptions&, M&,                    \
-                                                  std::pmr::memory_resource*);
+  template NavigationResult navigate_disparity<M>(                                                 \
+      ImageView<const float>, ImageView<const std::uint8_t>, const StereoRig&,                     \
+      const NavigationOptions&, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

@@ -148,9 +148,7 @@ PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
                                  options.target_min_m, options.target_max_m),
                      memory);
   const RowSweep sweep =
-      sweep_rows(terrain, zones, *start, *first_row,
-                 edge_weights(options),
-                 meter, memory);
+      sweep_rows(terrain, zones, *start, *first_row, edge_weights(options), meter, memory);
   const std::optional<Destination> destination = choose_destination(terrain, sweep, options);
   if (!destination)
     return not_found(fmt::format("no traversable point {:.1f}-{:.1f} m away can be reached "

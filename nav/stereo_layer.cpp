@@ -4,6 +4,7 @@
 #include "band_layout.hpp"
 #include "consistency_lines.hpp"
 #include "matching_cost.hpp"
+#include "right_view.hpp"
 #include "work_report.hpp"
 
 #include <algorithm>
@@ -24,7 +25,8 @@ struct BandWorkspace {
         wanted_high(static_cast<std::size_t>(tile_count(width)), 0, memory), layout(memory),
         costs(memory), jumps(static_cast<std::size_t>(width * kBandRows), 0, memory),
         choice(memory), right(static_cast<std::size_t>(width), 0, memory),
-        right_cost(static_cast<std::size_t>(width), 0, memory) {}
+        right_band(static_cast<std::size_t>(width * kBandRows), 0, memory),
+        right_best(static_cast<std::size_t>(width * kBandRows), 0, memory) {}
 
   std::pmr::vector<int> wanted_low; // per tile
   std::pmr::vector<int> wanted_high;
@@ -32,9 +34,9 @@ struct BandWorkspace {
   std::pmr::vector<std::uint16_t> costs;
   std::pmr::vector<std::uint16_t> jumps;
   BandChoice choice;
-  std::pmr::vector<std::int16_t> right; // the right view of one line
-
-  std::pmr::vector<std::uint16_t> right_cost;
+  std::pmr::vector<std::int16_t> right;      // the right view of one line
+  std::pmr::vector<std::int16_t> right_band; // the right view of every line, by lane
+  std::pmr::vector<std::int16_t> right_best; // scratch of choose_right_view
 };
 
 // The large-step penalty between pixels x - 1 and x of each line of the band.
@@ -58,8 +60,9 @@ int check_lane(BandWorkspace& band, int lane, int y0, int tolerance, LayerOutput
                Meter& meter) {
   const int width = output.disparity.width();
   const StridedLine<std::int16_t> left{band.choice.disparity.data() + lane, kBandRows};
-  claim_right(left, StridedLine<std::uint16_t>{band.choice.cost.data() + lane, kBandRows}, width,
-              band.right.data(), band.right_cost.data());
+  for (int x = 0; x < width; ++x)
+    band.right[static_cast<std::size_t>(x)] =
+        band.right_band[static_cast<std::size_t>(x * kBandRows + lane)];
   std::uint8_t* valid = output.valid.row(y0 + lane);
   output.valid_pixels +=
       static_cast<std::uint64_t>(check_line(left, band.right.data(), width, tolerance, valid));
@@ -138,6 +141,11 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
       output.candidates += cells;
       continue;
     }
+    // Choosing the right view is one more minimum over the band's cells.
+    report(meter, Work::disparity_choice,
+           choose_right_view(band.layout, dp.aggregated(), band.right_band.data(),
+                             band.right_best.data()) *
+               static_cast<std::uint64_t>(rows));
     for (int lane = 0; lane < rows; ++lane)
       largest = std::max(largest, check_lane(band, lane, y0, options.lr_tolerance, output, meter));
     output.candidates += cells;

@@ -57,6 +57,12 @@ int cells_within(const GroundGrid& grid, double distance_m) {
   return std::max(1, static_cast<int>(std::lround(distance_m / grid.cell())));
 }
 
+int cells_apart_within(const GroundGrid& grid, double distance_m) {
+  // The relative nudge keeps 0.30 / 0.10 at 3 despite rounding.
+  const double cells = std::floor(distance_m / grid.cell() * (1.0 + 1e-9));
+  return std::max(1, static_cast<int>(cells) - 1);
+}
+
 std::uint64_t mark_steps(const GroundGrid& grid, const TerrainPoints& terrain,
                          const ZoneOptions& options, Image<std::uint8_t>& zone,
                          std::pmr::memory_resource* memory) {
@@ -64,7 +70,7 @@ std::uint64_t mark_steps(const GroundGrid& grid, const TerrainPoints& terrain,
     return 0;
   std::uint64_t comparisons = 0;
   const Extremes window =
-      window_extremes(grid, cells_within(grid, options.step_baseline_m), memory, comparisons);
+      window_extremes(grid, cells_apart_within(grid, options.step_baseline_m), memory, comparisons);
   const auto limit = static_cast<float>(options.max_step_m);
   const auto traversable = static_cast<std::uint8_t>(Zone::traversable);
   const std::ptrdiff_t channels = zone.channels();

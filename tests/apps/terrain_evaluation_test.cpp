@@ -1,13 +1,18 @@
 #include "support/run_marsokhod.hpp"
 #include "terrain_scoring.hpp"
 
+#include "marsokhod/nav/image_io.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace marsokhod::apps {
@@ -68,7 +73,24 @@ TEST(ScoreZones, FreeGroundInsideTheTruthsMarginAndPixelsOneCameraMissesAreNotSc
   EXPECT_EQ(table[0].free_prohibited, 2U);
 }
 
-TEST(ElevationErrors, AreTakenOnFreeGroundWhereTheNavigationHasAPoint) {
+TEST(GroundTruthZones, GroundOnlyOneCameraSeesIsUnknownAndObstaclesAreSteps) {
+  world::GroundTruth truth = strip_truth();
+  truth.valid(2, 0) = 0; // the left camera sees it, the right one does not
+  truth.obstacles(0, 0) = 255;
+  nav::TerrainPoints terrain{nav::Image<float>(4, 1, 1, 5.0F), nav::Image<float>(4, 1, 1, 0.0F),
+                             nav::Image<float>(4, 1, 1, 0.0F), nav::Image<float>(4, 1, 1, 5.0F), 4};
+  for (int x = 0; x < 4; ++x)
+    terrain.left(x, 0) = 0.4F * static_cast<float>(x); // 0.4 m apart: beyond each other's margin
+  nav::ZoneOptions options;
+  options.rover_half_width_m = 0.3;
+  const nav::ZoneMap zones = ground_truth_zones(terrain, truth, options);
+  EXPECT_EQ(zones.at(0, 0), nav::Zone::step);
+  EXPECT_EQ(zones.at(1, 0), nav::Zone::traversable);
+  EXPECT_EQ(zones.at(2, 0), nav::Zone::unknown);
+  EXPECT_EQ(zones.at(3, 0), nav::Zone::traversable);
+}
+
+TEST(ElevationErrors, AreTakenOnJudgedFreeGroundWhereTheNavigationHasAPoint) {
   world::GroundTruth truth = strip_truth();
   truth.range(3, 0) = 7.0F; // band 6-10 m
   truth.obstacles(1, 0) = 255;
@@ -80,14 +102,21 @@ TEST(ElevationErrors, AreTakenOnFreeGroundWhereTheNavigationHasAPoint) {
     ours.elevation(x, 0) = 0.10F + 0.01F * static_cast<float>(x + 1);
   }
   ours.elevation(2, 0) = kInf; // no point: not scored
+  nav::ZoneMap zones{nav::Image<std::uint8_t>(4, 1, 1, 0), {}};
   std::array<std::vector<float>, kTerrainBands.size()> errors;
-  collect_elevation_errors(ours, truth, errors);
+  collect_elevation_errors(ours, zones, truth, errors);
   // Pixel 0 (0.01 m off) in 2-6 m; pixel 1 is an obstacle; pixel 3 (0.04 m off) in 6-10 m.
   ASSERT_EQ(errors[0].size(), 1U);
   EXPECT_NEAR(errors[0][0], 0.01, 1e-6);
   ASSERT_EQ(errors[1].size(), 1U);
   EXPECT_NEAR(errors[1][0], 0.04, 1e-6);
   EXPECT_TRUE(errors[2].empty());
+  // A point the zone rules set aside as unknown (out of order, say) is not scored.
+  zones.zone(3, 0) = static_cast<std::uint8_t>(nav::Zone::unknown);
+  std::array<std::vector<float>, kTerrainBands.size()> judged;
+  collect_elevation_errors(ours, zones, truth, judged);
+  EXPECT_EQ(judged[0].size(), 1U);
+  EXPECT_TRUE(judged[1].empty());
 }
 
 TEST(CrossesObstacle, IsTrueWhenAnyPathPixelSeesAnObstacle) {
@@ -117,6 +146,34 @@ TEST(EvalTerrainCommand, ReportsEveryKeyForTwoSmallSites) {
   EXPECT_EQ(json["bands"][0]["band_m"], "2-6");
   EXPECT_EQ(json["per_seed"].size(), 2U);
   EXPECT_NE(result.err.find("seed 2/2"), std::string::npos) << result.err;
+}
+
+TEST(EvalTerrainCommand, PicturesShowEachSiteInThreePanels) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "marsokhod-eval-terrain-tests" / "pictures";
+  std::filesystem::remove_all(dir);
+  const auto result = run_marsokhod("eval terrain --seeds 3 --size 64 --terrain-size 16 "
+                                    "--pictures '" +
+                                    dir.string() + "'");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nav::AnyImage picture = nav::read_image(dir / "seed-3.png");
+  const auto* rgb = std::get_if<nav::Image<std::uint8_t>>(&picture);
+  ASSERT_NE(rgb, nullptr);
+  EXPECT_EQ(rgb->width(), 3 * 64);
+  EXPECT_EQ(rgb->height(), 64);
+  EXPECT_EQ(rgb->channels(), 3);
+}
+
+TEST(EvalTerrainCommand, APicturesFolderThatCannotBeMadeIsARuntimeErrorNamingIt) {
+  const std::filesystem::path base =
+      std::filesystem::temp_directory_path() / "marsokhod-eval-terrain-tests" / "blocked";
+  std::filesystem::create_directories(base);
+  std::ofstream(base / "a-file") << "not a folder";
+  const std::filesystem::path dir = base / "a-file" / "pictures";
+  const auto result =
+      run_marsokhod("eval terrain --seeds 3 --size 64 --pictures '" + dir.string() + "'");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find(dir.string()), std::string::npos) << result.err;
 }
 
 TEST(EvalTerrainCommand, MalformedSeedRangesAreUsageErrors) {

@@ -1,7 +1,8 @@
 // What the matcher reports and takes: the work counted by a meter follows the work done, every
 // buffer comes from the caller's memory resource, and bad input is refused clearly.
-#include "marsokhod/nav/stereo.hpp"
 #include "stereo_test_support.hpp"
+
+#include "marsokhod/nav/stereo.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,8 +27,12 @@ void* operator new(std::size_t size) {
     return p;
   throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
 
 namespace marsokhod::nav {
 namespace {
@@ -72,9 +77,14 @@ TEST(StereoWork, AWiderBandReportsTheExtraCandidatesItEvaluates) {
                        static_cast<double>(narrow.count(Work::match_candidate));
   EXPECT_GT(extra, 0.95 * 8.0 * guided_pixels);
   EXPECT_LE(extra, 8.0 * guided_pixels);
-  // The matcher's other per-candidate work follows: two passes of the programme and a choice.
+  // The matcher's other per-candidate work follows: two passes of the programme, a choice for
+  // the left view and, on the layers that are checked, another for the right view over the
+  // candidates that reach a right pixel.
   EXPECT_EQ(wide.count(Work::dp_transition), 2 * wide.count(Work::match_candidate));
-  EXPECT_EQ(wide.count(Work::disparity_choice), wide.count(Work::match_candidate));
+  EXPECT_GT(wide.count(Work::disparity_choice), wide.count(Work::match_candidate));
+  EXPECT_LE(wide.count(Work::disparity_choice), 2 * wide.count(Work::match_candidate));
+  EXPECT_GT(wide.count(Work::disparity_choice) - narrow.count(Work::disparity_choice),
+            static_cast<std::uint64_t>(extra));
 }
 
 TEST(StereoWork, TheDynamicMeterSeesWhatTheCountingMeterSees) {
@@ -109,8 +119,9 @@ TEST(StereoMemory, TooLittleMemoryThrowsBadAlloc) {
   const DotPair pair = make_dot_pair(DotScene{});
   auto arena = std::make_unique<std::byte[]>(20000);
   std::pmr::monotonic_buffer_resource memory(arena.get(), 20000, std::pmr::null_memory_resource());
-  EXPECT_THROW(match_stereo(pair.left.view(), pair.right.view(), scene_options(), null_meter, &memory),
-               std::bad_alloc);
+  EXPECT_THROW(
+      match_stereo(pair.left.view(), pair.right.view(), scene_options(), null_meter, &memory),
+      std::bad_alloc);
 }
 
 // Expects std::invalid_argument whose message contains `fragment`.

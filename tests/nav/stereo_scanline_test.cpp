@@ -1,9 +1,10 @@
 // The scan-line dynamic programme, the left-right check and the fill policy on hand-made lines.
+#include "stereo_test_support.hpp"
+
 #include "marsokhod/nav/consistency_check.hpp"
 #include "marsokhod/nav/disparity_fill.hpp"
 #include "marsokhod/nav/disparity_metrics.hpp"
 #include "marsokhod/nav/scanline_dp.hpp"
-#include "stereo_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,9 @@ namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // The step profile 3 (x < 20), 9 (20..39), 5 (x >= 40) over 60 pixels and 12 candidates.
-int step_profile(int x) { return x < 20 ? 3 : (x < 40 ? 9 : 5); }
+int step_profile(int x) {
+  return x < 20 ? 3 : (x < 40 ? 9 : 5);
+}
 
 // Costs that favour the profile (10 per pixel of distance, capped) but lie at every seventh
 // pixel: there a wrong disparity costs 0 and the true one 12, so choosing pixel by pixel fails.
@@ -70,24 +73,83 @@ TEST(ScanlineDp, RejectsCostTablesOfTheWrongSizeOrRange) {
   std::vector<std::uint16_t> too_high(12, 1);
   too_high[5] = 300;
   EXPECT_THROW(scanline_disparities(too_high, 3, 4, DpPenalties{}), std::invalid_argument);
-  EXPECT_THROW(scanline_disparities(std::vector<std::uint16_t>(12, 1), 3, 4, DpPenalties{-1, 5, 5, 5}),
-               std::invalid_argument);
+  EXPECT_THROW(
+      scanline_disparities(std::vector<std::uint16_t>(12, 1), 3, 4, DpPenalties{-1, 5, 5, 5}),
+      std::invalid_argument);
 }
 
-TEST(ConsistencyCheck, ThePixelWithTheCheaperClaimKeepsTheRightPixel) {
-  // Right pixel 3 is claimed by left pixels 3 (d 0, cost 5), 4 (d 1, cost 9) and 6 (d 3, cost
-  // 2); right pixel 4 by pixels 5 (d 1, cost 9) and 7 (d 3, cost 2). The cheap ones win.
-  const std::vector<int> left = {0, 0, 0, 0, 1, 1, 3, 3};
-  const std::vector<std::uint16_t> cost = {5, 5, 5, 5, 9, 9, 2, 2};
-  std::vector<int> right(8);
-  std::vector<std::uint16_t> workspace(8);
-  claim_right_pixels(left, cost, right, workspace);
-  EXPECT_EQ(right, (std::vector<int>{0, 0, 0, 3, 3, -1, -1, -1}));
+// Aggregated costs S of a line: S(x, d) = 10 except where `cheap` lists (x, d, s).
+struct Cheap {
+  int x, d, s;
+};
+std::vector<std::uint16_t> aggregated_line(int width, int candidates,
+                                           std::initializer_list<Cheap> cheap) {
+  std::vector<std::uint16_t> s(static_cast<std::size_t>(width * candidates), 10);
+  for (const Cheap& c : cheap)
+    s[static_cast<std::size_t>(c.x * candidates + c.d)] = static_cast<std::uint16_t>(c.s);
+  return s;
+}
+
+TEST(ConsistencyCheck, TheRightViewTakesTheCheapestAggregatedCostAlongItsOwnLine) {
+  // Right pixel 2 is met by (x 2, d 0), (3, 1), (4, 2) and (5, 3); (4, 2) is the cheapest.
+  // Right pixel 5 is met only by (5, 0), (6, 1) and (7, 2), all equal: the smallest d wins.
+  const std::vector<std::uint16_t> s = aggregated_line(8, 4, {{4, 2, 3}, {5, 3, 4}});
+  const std::vector<int> right = right_view_disparities(s, 8, 4);
+  EXPECT_EQ(right[2], 2);
+  EXPECT_EQ(right[5], 0);
+  // Left pixel 5 chose d 3 (right pixel 2, which prefers d 2): within 1, so it agrees; a left
+  // pixel 7 that chose d 2 lands on right pixel 5, which chose d 0, and fails.
   std::vector<std::uint8_t> valid(8);
-  const int reliable = check_left_right(left, right, 0, valid);
-  // Pixels 3, 4 and 5 lost their right pixels to 6 and 7, whose disparity differs.
-  EXPECT_EQ(valid, (std::vector<std::uint8_t>{255, 255, 255, 0, 0, 0, 255, 255}));
-  EXPECT_EQ(reliable, 5);
+  const std::vector<int> left = {0, 0, 0, 0, 2, 3, 0, 2};
+  check_left_right(left, right, 1, valid);
+  EXPECT_EQ(valid[5], 255);
+  EXPECT_EQ(valid[7], 0);
+}
+
+TEST(ConsistencyCheck, AMismatchNobodyElseClaimsStillFailsAgainstTheRightView) {
+  // Left pixel 6 picks d 4 (right pixel 2) on a cheap S, but right pixel 2's own line finds a
+  // cheaper match at d 1 (left pixel 3): the claim alone would stand, the right view does not.
+  const std::vector<std::uint16_t> s = aggregated_line(8, 5, {{6, 4, 5}, {3, 1, 2}});
+  const std::vector<int> right = right_view_disparities(s, 8, 5);
+  EXPECT_EQ(right[2], 1);
+  std::vector<std::uint8_t> valid(8);
+  check_left_right(std::vector<int>{0, 0, 0, 1, 0, 0, 4, 0}, right, 1, valid);
+  EXPECT_EQ(valid[6], 0);
+  EXPECT_EQ(valid[3], 255);
+}
+
+TEST(ConsistencyCheck, TheRightViewAgreesWithABruteForceMinimumOnRandomLines) {
+  std::uint32_t state = 12345;
+  const auto next = [&state] {
+    state = state * 1664525U + 1013904223U;
+    return state >> 8;
+  };
+  for (int trial = 0; trial < 200; ++trial) {
+    const int width = 1 + static_cast<int>(next() % 40);
+    const int candidates = 1 + static_cast<int>(next() % 12);
+    std::vector<std::uint16_t> s(static_cast<std::size_t>(width * candidates));
+    for (std::uint16_t& v : s)
+      v = static_cast<std::uint16_t>(next() % 16); // many ties
+    const std::vector<int> right = right_view_disparities(s, width, candidates);
+    for (int r = 0; r < width; ++r) {
+      int expected = -1;
+      int best = 0;
+      for (int d = 0; d < candidates && r + d < width; ++d) {
+        const int v = s[static_cast<std::size_t>((r + d) * candidates + d)];
+        if (expected < 0 || v < best) {
+          expected = d;
+          best = v;
+        }
+      }
+      ASSERT_EQ(right[static_cast<std::size_t>(r)], expected)
+          << "trial " << trial << " r " << r << " width " << width << " candidates " << candidates;
+    }
+  }
+}
+
+TEST(ConsistencyCheck, TheRightViewRejectsAVolumeOfTheWrongSize) {
+  EXPECT_THROW(right_view_disparities(std::vector<std::uint16_t>(11), 3, 4), std::invalid_argument);
+  EXPECT_THROW(right_view_disparities({}, 0, 4), std::invalid_argument);
 }
 
 TEST(ConsistencyCheck, ToleranceAcceptsNeighbouringDisparitiesAndTheImageEdgeIsUnreliable) {

@@ -71,10 +71,11 @@ TEST(FindZones, StepOverTheLimitProhibitsTheBoxAndABaselineAroundItThenTheMargin
   const ZoneMap zones = find_zones(grid_with_box(g, box), {}, grid_options());
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
-      // Step within 6 cells (0.30 m) of the box; margin within 10.4 cells of a step cell.
+      // Step within 5 cells (0.25 m, the farthest pair of 0.05 m cells within the 0.32 m
+      // baseline) of the box; margin within 10.4 cells of a step cell.
       const int distance = distance_to_box(box, x, y);
-      const Zone expected = distance <= 6 ? Zone::step
-                            : squared_distance_to_grown_box(box, 6, x, y) <= 108
+      const Zone expected = distance <= 5 ? Zone::step
+                            : squared_distance_to_grown_box(box, 5, x, y) <= 108
                                 ? Zone::margin
                                 : Zone::traversable;
       ASSERT_EQ(zones.at(x, y), expected) << x << "," << y << " at distance " << distance;
@@ -93,8 +94,8 @@ TEST(FindZones, TheStepLimitIsConfigurable) {
   options.max_step_m = 0.20;
   const ZoneMap zones = find_zones(grid_with_box(GridSpec{}, {25, 25, 34, 34, 0.25}), {}, options);
   EXPECT_EQ(zones.at(30, 30), Zone::step);
-  EXPECT_EQ(zones.at(30, 25 - 6), Zone::step);
-  EXPECT_EQ(zones.at(30, 25 - 7), Zone::margin);
+  EXPECT_EQ(zones.at(30, 25 - 5), Zone::step);
+  EXPECT_EQ(zones.at(30, 25 - 6), Zone::margin);
 }
 
 TEST(FindZones, SlopesSteeperThanTheLimitAreProhibited) {
@@ -210,6 +211,37 @@ TEST(FindZones, PixelsThatSeeBeyondTheRowsAboveThemAreUnknown) {
   EXPECT_EQ(find_zones(t, {}, options).count(Zone::unknown), 1U);
   options.order_tolerance = 0.0;
   EXPECT_EQ(find_zones(t, {}, options).count(Zone::unknown), 0U);
+}
+
+TEST(FindZones, AClusterOfMismatchesAtTheFootOfAColumnIsOutvotedByTheRest) {
+  // The bottom 8 pixels of column 20 (really 2.0-2.35 m ahead) all see 4.5 m: a rock whose
+  // disparity lay outside the search, matched as one piece to the wrong place. Each agrees with
+  // its neighbours; only the column as a whole shows that ground farther up the image is nearer.
+  const GridSpec g;
+  TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
+  for (int y = g.height - 8; y < g.height; ++y) {
+    t.forward(20, y) = 4.5F;
+    t.range(20, y) = std::hypot(t.forward(20, y), t.left(20, y));
+  }
+  const ZoneMap zones = find_zones(t, {}, grid_options());
+  EXPECT_EQ(zones.count(Zone::unknown), 8U);
+  for (int y = g.height - 8; y < g.height; ++y)
+    EXPECT_EQ(zones.at(20, y), Zone::unknown) << y;
+}
+
+TEST(FindZones, RangeNoiseWithinTheOrderToleranceKeepsEveryPixel) {
+  // Ranges jittered by up to 2 %: the rows of a column no longer increase strictly, but no
+  // pixel contradicts the column by more than the 5 % tolerance.
+  const GridSpec g;
+  TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
+  std::uint32_t state = 7;
+  for (int y = 0; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x) {
+      state = state * 1664525U + 1013904223U;
+      const double jitter = 0.02 * (static_cast<double>(state >> 8) / double(1 << 24) * 2.0 - 1.0);
+      t.range(x, y) *= static_cast<float>(1.0 + jitter);
+    }
+  EXPECT_EQ(find_zones(t, {}, grid_options()).count(Zone::unknown), 0U);
 }
 
 TEST(FindZones, ReportsFewerHazardTestsForLessKnownGround) {

@@ -4,17 +4,19 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace marsokhod::nav {
 
-/// The right image's view of one scan line's matches, derived from the left view's winners
-/// instead of a second matching pass: each left pixel x with disparity d and aggregated cost c
-/// claims right pixel x - d, and the cheapest claim on each right pixel stands (the smaller
-/// disparity on a tie). `right` gets the standing claim's disparity, -1 where none arrived;
-/// `right_cost` is workspace. Where two surfaces compete for one right pixel (an occlusion, a
-/// fattened edge) only the better match keeps it.
-void claim_right_pixels(std::span<const int> left, std::span<const std::uint16_t> left_cost,
-                        std::span<int> right, std::span<std::uint16_t> right_cost);
+/// The right image's view of one scan line from the left view's aggregated costs (the S of the
+/// scan-line programme, aggregated[x * candidates + d] for left pixel x and disparity d): right
+/// pixel r takes the disparity d with the smallest S(r + d, d) over the left pixels r + d of the
+/// line, the smaller disparity on a tie, or -1 where no left pixel reaches it (r + d >= width
+/// for every d). This is the right view of semi-global matching (Hirschmueller 2008): a second
+/// minimum over the same costs instead of a second matching pass. Throws std::invalid_argument
+/// when aggregated does not hold width x candidates values.
+std::vector<int> right_view_disparities(std::span<const std::uint16_t> aggregated, int width,
+                                        int candidates);
 
 /// The left-right check of one scan line: a left pixel x with disparity d is reliable (255)
 /// when x - d lies inside the image and the right pixel's disparity is within `tolerance` of

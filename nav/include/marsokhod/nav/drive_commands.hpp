@@ -36,7 +36,7 @@ struct DrivePlan {
   std::pmr::vector<GroundPoint> ground_path; ///< every path pixel's ground point
   /// The simplified path: start, the fracture points (the paper's turns), target.
   std::pmr::vector<GroundPoint> polyline;
-  double start_m = 0.0;  ///< ground distance of the start from the rover centre
+  double start_m = 0.0; ///< ground distance of the start from the rover centre
   std::pmr::vector<double> fracture_m;
   double target_m = 0.0;
   /// From the rover centre facing its heading: first to the start, then along the polyline.
@@ -44,10 +44,9 @@ struct DrivePlan {
 };
 
 /// Indices of the points Douglas-Peucker keeps (always the first and the last), in order.
-std::pmr::vector<std::size_t> simplify_polyline(std::span<const GroundPoint> points,
-                                                double tolerance_m,
-                                                std::pmr::memory_resource* memory =
-                                                    std::pmr::get_default_resource());
+std::pmr::vector<std::size_t>
+simplify_polyline(std::span<const GroundPoint> points, double tolerance_m,
+                  std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// Simplifies a ground path (at least one point) and derives distances and commands. Throws
 /// std::invalid_argument for an empty path or bad options.

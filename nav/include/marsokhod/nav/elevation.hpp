@@ -32,9 +32,9 @@ struct TerrainPoints {
 /// is reported per converted pixel (Work::range_pixel and Work::elevation_pixel).
 /// Instantiated for NullMeter, CountingMeter and DynamicMeter.
 template <class Meter = NullMeter>
-TerrainPoints reconstruct_terrain(ImageView<const float> disparity, const StereoRig& rig,
-                                  const Attitude& attitude, Meter& meter = null_meter,
-                                  std::pmr::memory_resource* memory =
-                                      std::pmr::get_default_resource());
+TerrainPoints
+reconstruct_terrain(ImageView<const float> disparity, const StereoRig& rig,
+                    const Attitude& attitude, Meter& meter = null_meter,
+                    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 } // namespace marsokhod::nav

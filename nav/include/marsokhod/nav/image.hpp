@@ -1,7 +1,7 @@
 #pragma once
 
-#include <cassert>
 #include <algorithm>
+#include <cassert>
 #include <cstddef>
 #include <memory_resource>
 #include <stdexcept>
@@ -24,8 +24,8 @@ public:
 
   // A view of T converts to a view of const T, never the other way.
   template <class U>
-    requires(std::is_same_v<const U, T> && !std::is_same_v<U, T>)
-  ImageView(const ImageView<U>& other) // NOLINT(google-explicit-constructor)
+  requires(std::is_same_v<const U, T> && !std::is_same_v<U, T>)
+      ImageView(const ImageView<U>& other) // NOLINT(google-explicit-constructor)
       : data_(other.data()), width_(other.width()), height_(other.height()),
         channels_(other.channels()), stride_(other.stride()) {}
 
@@ -76,7 +76,8 @@ public:
   Image() = default;
   explicit Image(allocator_type alloc) : pixels_(alloc) {}
   Image(int width, int height, int channels = 1, T fill = T{}, allocator_type alloc = {})
-      : width_(checked_side(width)), height_(checked_side(height)), channels_(checked_channels(channels)),
+      : width_(checked_side(width)), height_(checked_side(height)),
+        channels_(checked_channels(channels)),
         pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) *
                     static_cast<std::size_t>(channels),
                 fill, alloc) {}
@@ -99,11 +100,13 @@ public:
   const T* row(int y) const { return pixels_.data() + y * stride(); }
   T& operator()(int x, int y, int c = 0) {
     assert(x >= 0 && x < width_ && y >= 0 && y < height_ && c >= 0 && c < channels_);
-    return pixels_[static_cast<std::size_t>(y * stride() + static_cast<std::ptrdiff_t>(x) * channels_ + c)];
+    return pixels_[static_cast<std::size_t>(y * stride() +
+                                            static_cast<std::ptrdiff_t>(x) * channels_ + c)];
   }
   const T& operator()(int x, int y, int c = 0) const {
     assert(x >= 0 && x < width_ && y >= 0 && y < height_ && c >= 0 && c < channels_);
-    return pixels_[static_cast<std::size_t>(y * stride() + static_cast<std::ptrdiff_t>(x) * channels_ + c)];
+    return pixels_[static_cast<std::size_t>(y * stride() +
+                                            static_cast<std::ptrdiff_t>(x) * channels_ + c)];
   }
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width_ && y < height_; }
 
@@ -135,11 +138,12 @@ private:
 
 /// Copies a view into a new owning image (same size and channels).
 template <class T>
-Image<std::remove_const_t<T>> to_image(ImageView<T> view,
-                                       std::pmr::polymorphic_allocator<std::remove_const_t<T>> alloc = {}) {
+Image<std::remove_const_t<T>>
+to_image(ImageView<T> view, std::pmr::polymorphic_allocator<std::remove_const_t<T>> alloc = {}) {
   Image<std::remove_const_t<T>> out(view.width(), view.height(), view.channels(), {}, alloc);
   for (int y = 0; y < view.height(); ++y)
-    std::copy(view.row(y), view.row(y) + static_cast<std::ptrdiff_t>(view.width()) * view.channels(),
+    std::copy(view.row(y),
+              view.row(y) + static_cast<std::ptrdiff_t>(view.width()) * view.channels(),
               out.row(y));
   return out;
 }

@@ -55,8 +55,8 @@ struct MotionConfig {
 /// The scheme's memory: its state and the turning done since the last emergency began.
 struct MotionStatus {
   MotionState state = MotionState::normal_planning;
-  double turned_deg = 0.0;    ///< total of this escape's turns, always positive
-  double turn_sign = 0.0;     ///< +1 turning left, -1 turning right, 0 outside an escape
+  double turned_deg = 0.0; ///< total of this escape's turns, always positive
+  double turn_sign = 0.0;  ///< +1 turning left, -1 turning right, 0 outside an escape
   friend bool operator==(const MotionStatus&, const MotionStatus&) = default;
 };
 

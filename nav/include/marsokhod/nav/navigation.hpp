@@ -43,9 +43,9 @@ int rover_max_disparity(const StereoRig& rig, const Attitude& attitude);
 
 /// 255 where the 5 x 5 neighbourhood of a pixel spans at least `grey_range` grey levels, 0
 /// where it is featureless (NavigationOptions::featureless_grey_range).
-Image<std::uint8_t> textured_pixels(ImageView<const std::uint8_t> image, int grey_range,
-                                    std::pmr::memory_resource* memory =
-                                        std::pmr::get_default_resource());
+Image<std::uint8_t>
+textured_pixels(ImageView<const std::uint8_t> image, int grey_range,
+                std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// One navigation cycle's products, each stage's output kept for pictures and evaluation.
 struct NavigationResult {
@@ -73,10 +73,10 @@ NavigationResult navigate(ImageView<const std::uint8_t> left, ImageView<const st
 /// The same cycle from a disparity map already made (+inf unknown); `reliable` (may be empty)
 /// marks the pixels that passed the left-right check.
 template <class Meter = NullMeter>
-NavigationResult navigate_disparity(ImageView<const float> disparity,
-                                    ImageView<const std::uint8_t> reliable, const StereoRig& rig,
-                                    const NavigationOptions& options, Meter& meter = null_meter,
-                                    std::pmr::memory_resource* memory =
-                                        std::pmr::get_default_resource());
+NavigationResult
+navigate_disparity(ImageView<const float> disparity, ImageView<const std::uint8_t> reliable,
+                   const StereoRig& rig, const NavigationOptions& options,
+                   Meter& meter = null_meter,
+                   std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 } // namespace marsokhod::nav

@@ -1,0 +1,84 @@
+#include "terrain_pictures.hpp"
+
+#include <array>
+
+namespace marsokhod::apps {
+namespace {
+
+using Rgb = std::array<std::uint8_t, 3>;
+
+constexpr Rgb kOpen{0, 0, 0};
+constexpr Rgb kFalseUnknown{60, 110, 255};
+constexpr Rgb kFalseHazard{255, 140, 0};
+constexpr Rgb kFalseMargin{240, 220, 40};
+constexpr Rgb kObstacleCaught{255, 255, 255};
+constexpr Rgb kObstacleMissed{230, 20, 20};
+constexpr Rgb kUnscoredOpen{50, 50, 50};
+constexpr Rgb kUnscoredProhibited{120, 120, 120};
+constexpr Rgb kNotSeen{20, 20, 60};
+constexpr Rgb kPathGreen{40, 230, 60};
+constexpr Rgb kTruthPathCyan{0, 220, 230};
+constexpr Rgb kTruthMargin{160, 160, 160};
+
+void put(nav::Image<std::uint8_t>& picture, int x, int y, const Rgb& colour) {
+  for (int c = 0; c < 3; ++c)
+    picture(x, y, c) = colour[static_cast<std::size_t>(c)];
+}
+
+Rgb verdict(const TerrainComparison& site, int x, int y) {
+  if (site.truth.valid(x, y) == 0)
+    return kNotSeen;
+  const nav::Zone zone = site.zones.at(x, y);
+  const bool prohibited = zone != nav::Zone::traversable;
+  if (site.truth.obstacles(x, y) != 0)
+    return prohibited ? kObstacleCaught : kObstacleMissed;
+  if (!site.truth_zones.traversable(x, y))
+    return prohibited ? kUnscoredProhibited : kUnscoredOpen;
+  if (!prohibited)
+    return kOpen;
+  if (zone == nav::Zone::unknown)
+    return kFalseUnknown;
+  if (zone == nav::Zone::margin)
+    return kFalseMargin;
+  return kFalseHazard;
+}
+
+Rgb truth_colour(const TerrainComparison& site, int x, int y) {
+  const nav::Zone zone = site.truth_zones.at(x, y);
+  if (zone == nav::Zone::traversable)
+    return kOpen;
+  if (zone == nav::Zone::margin)
+    return kTruthMargin;
+  if (zone == nav::Zone::unknown)
+    return kNotSeen;
+  return kObstacleCaught;
+}
+
+void draw_path(nav::Image<std::uint8_t>& picture, const nav::PathPlan& plan, int offset,
+               const Rgb& colour) {
+  if (!plan.found)
+    return;
+  for (const nav::PixelPoint& p : plan.pixels)
+    put(picture, p.x + offset, p.y, colour);
+}
+
+} // namespace
+
+nav::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison& site) {
+  const int width = site.left.width();
+  const int height = site.left.height();
+  nav::Image<std::uint8_t> picture(3 * width, height, 3);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const std::uint8_t grey = site.left(x, y);
+      put(picture, x, y, {grey, grey, grey});
+      put(picture, x + width, y, verdict(site, x, y));
+      put(picture, x + 2 * width, y, truth_colour(site, x, y));
+    }
+  draw_path(picture, site.plan, 0, kPathGreen);
+  draw_path(picture, site.plan, width, kPathGreen);
+  draw_path(picture, site.truth_plan, 2 * width, kTruthPathCyan);
+  return picture;
+}
+
+} // namespace marsokhod::apps

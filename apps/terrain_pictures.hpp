@@ -1,0 +1,30 @@
+#pragma once
+
+#include "marsokhod/nav/image.hpp"
+#include "marsokhod/nav/navigation.hpp"
+#include "marsokhod/world/ground_truth.hpp"
+
+#include <cstdint>
+
+namespace marsokhod::apps {
+
+/// What `eval terrain --pictures` draws of one site: the left image, the navigation's zones
+/// judged against ground truth, and the ground-truth zones, side by side (docs/navigation.md,
+/// "Synthetic terrain" gives the colours).
+struct TerrainComparison {
+  const nav::Image<std::uint8_t>& left;
+  const nav::ZoneMap& zones;
+  const nav::PathPlan& plan;
+  const nav::ZoneMap& truth_zones;
+  const nav::PathPlan& truth_plan;
+  const world::GroundTruth& truth;
+};
+
+/// An RGB picture three panels wide. The middle panel colours each pixel both cameras see by
+/// the verdict: free ground left open black, falsely prohibited as unknown blue, as a step or
+/// slope orange, as margin yellow; obstacles prohibited white and missed red; pixels inside
+/// the truth's margin (not scored) dark grey, or mid grey when prohibited. The navigation's
+/// path is drawn green on the first two panels, the ground-truth path cyan on the third.
+nav::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison& site);
+
+} // namespace marsokhod::apps
