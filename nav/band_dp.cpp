@@ -75,36 +75,36 @@ constexpr int kChunkBits = 5;
 struct Choice {
   Lanes16 best_cost = broadcast16(kUnreachable);
   Lanes16 best_index{};
-  Lanes16 chunk_key = broadcast16(0x7FFF);
-  int chunk_start = 0;
 
-  void see(Lanes16 s, int k) {
-    if (k - chunk_start == kChunk)
-      close_chunk(k);
-    const Lanes16 capped = lanes_min(s, broadcast16(kPaddingCost));
-    chunk_key = lanes_min(chunk_key, (capped << kChunkBits) + broadcast16(k - chunk_start));
+  static Lanes16 key(Lanes16 s, Lanes16 in_chunk) {
+    return (lanes_min(s, broadcast16(kPaddingCost)) << kChunkBits) + in_chunk;
   }
-  // Folds a chunk into the choice; an earlier chunk wins a tie.
-  void close_chunk(int next_start) {
+  // Folds the smallest key of the chunk starting at cell `start`; an earlier chunk wins a tie.
+  void fold(Lanes16 chunk_key, int start) {
     const Lanes16 cost = chunk_key >> kChunkBits;
     const Lanes16 better = cost < best_cost;
     best_cost = better ? cost : best_cost;
-    best_index = better ? (chunk_key & (kChunk - 1)) + broadcast16(chunk_start) : best_index;
-    chunk_key = broadcast16(0x7FFF);
-    chunk_start = next_start;
+    best_index = better ? (chunk_key & (kChunk - 1)) + broadcast16(start) : best_index;
   }
 };
 
-// The S of the cells beside each lane's chosen one, unreachable where there is none.
+// The S of the cells beside each lane's chosen one, unreachable where there is none. Exactly
+// one cell matches each wanted index, so masks and ors gather it without a select per cell.
 void neighbours(const std::uint16_t* s, int cells, Lanes16 index, Lanes16& before, Lanes16& after) {
-  before = broadcast16(kUnreachable);
-  after = broadcast16(kUnreachable);
+  const Lanes16 want_before = index - 1;
+  const Lanes16 want_after = index + 1;
+  Lanes16 found_before{};
+  Lanes16 found_after{};
+  Lanes16 cell{};
   for (int k = 0; k < cells; ++k) {
     const Lanes16 here = load_lanes<Lanes16>(s + k * kBandRows);
-    const Lanes16 cell = broadcast16(k);
-    before = index == cell + 1 ? here : before;
-    after = index == cell - 1 ? here : after;
+    found_before |= here & (cell == want_before);
+    found_after |= here & (cell == want_after);
+    cell += 1;
   }
+  const Lanes16 unreachable = broadcast16(kUnreachable);
+  before = index > 0 ? found_before : unreachable;
+  after = want_after < broadcast16(cells) ? found_after : unreachable;
 }
 
 } // namespace
@@ -156,19 +156,26 @@ void BandDp::backward_pass(const BandLayout& layout, const std::uint16_t* costs,
     Lanes16 below = load_lanes<Lanes16>(path - kBandRows);
     Lanes16 here = load_lanes<Lanes16>(path);
     Choice best;
-    for (int k = 0; k < cells; ++k) {
-      const Lanes16 above = load_lanes<Lanes16>(path + (k + 1) * kBandRows);
-      const Lanes16 step =
-          lanes_min(lanes_min(here + stay_shift, lanes_min(below, above) + step_shift), jump);
-      const Lanes16 cost = load_lanes<Lanes16>(costs + at + k * kBandRows);
-      const Lanes16 total = cost + step;
-      store_lanes(path + k * kBandRows, total);
-      smallest = lanes_min(smallest, total);
-      const Lanes16 s = load_lanes<Lanes16>(forward + k * kBandRows) + total - cost;
-      store_lanes(forward + k * kBandRows, s);
-      best.see(s, k);
-      below = here;
-      here = above;
+    for (int start = 0; start < cells; start += kChunk) {
+      const int end = std::min(cells, start + kChunk);
+      Lanes16 chunk_key = broadcast16(0x7FFF);
+      Lanes16 in_chunk{};
+      for (int k = start; k < end; ++k) {
+        const Lanes16 above = load_lanes<Lanes16>(path + (k + 1) * kBandRows);
+        const Lanes16 step =
+            lanes_min(lanes_min(here + stay_shift, lanes_min(below, above) + step_shift), jump);
+        const Lanes16 cost = load_lanes<Lanes16>(costs + at + k * kBandRows);
+        const Lanes16 total = cost + step;
+        store_lanes(path + k * kBandRows, total);
+        smallest = lanes_min(smallest, total);
+        const Lanes16 s = load_lanes<Lanes16>(forward + k * kBandRows) + total - cost;
+        store_lanes(forward + k * kBandRows, s);
+        chunk_key = lanes_min(chunk_key, Choice::key(s, in_chunk));
+        in_chunk += 1;
+        below = here;
+        here = above;
+      }
+      best.fold(chunk_key, start);
     }
     previous_min = smallest;
     if (first != window_first || cells != window_cells) {
@@ -176,14 +183,12 @@ void BandDp::backward_pass(const BandLayout& layout, const std::uint16_t* costs,
       window_first = first;
       window_cells = cells;
     }
-    best.close_chunk(cells);
     Lanes16 before;
     Lanes16 after;
     neighbours(forward, cells, best.best_index, before, after);
     const Lanes16 disparity = best.best_index + broadcast16(first);
     const std::size_t out = static_cast<std::size_t>(x * kBandRows);
     store_lanes(choice.disparity.data() + out, disparity);
-    store_lanes(choice.cost.data() + out, best.best_cost);
     store_subpixel(choice.subpixel.data() + out, disparity, before, best.best_cost, after);
   }
   clear_stale(origin, window_first, window_cells, 0, 0);
@@ -196,7 +201,6 @@ void BandDp::run(const BandLayout& layout, const std::uint16_t* costs, const std
   const std::size_t size = static_cast<std::size_t>(width_ * kBandRows);
   choice.disparity.resize(size);
   choice.subpixel.resize(size);
-  choice.cost.resize(size);
   forward_pass(layout, costs, jumps, small_step);
   backward_pass(layout, costs, jumps, small_step, choice);
 }

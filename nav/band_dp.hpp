@@ -11,14 +11,11 @@
 
 namespace marsokhod::nav::detail {
 
-/// Each line's chosen disparities, their sub-pixel refinement and aggregated cost, at
-/// [x * kBandRows + lane].
+/// Each line's chosen disparities and their sub-pixel refinement, at [x * kBandRows + lane].
 struct BandChoice {
-  explicit BandChoice(std::pmr::memory_resource* memory)
-      : disparity(memory), subpixel(memory), cost(memory) {}
+  explicit BandChoice(std::pmr::memory_resource* memory) : disparity(memory), subpixel(memory) {}
   std::pmr::vector<std::int16_t> disparity;
   std::pmr::vector<float> subpixel;
-  std::pmr::vector<std::uint16_t> cost;
 };
 
 /// Runs the forward and the backward pass of the scan-line programme (see scanline_disparities)
