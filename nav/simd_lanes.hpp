@@ -55,6 +55,34 @@ inline Floats4 high_floats(Lanes16 v) {
   return __builtin_convertvector(doubled >> 16, Floats4);
 }
 
+/// Eight bytes from `from` widened to 16-bit lanes.
+inline Lanes16 widen_bytes(const std::uint8_t* from) {
+  using Bytes8 = std::uint8_t __attribute__((vector_size(8)));
+  return __builtin_convertvector(load_lanes<Bytes8>(from), Lanes16);
+}
+
+/// Transposes an 8 x 8 block: afterwards rows[i][j] holds what rows[j][i] held. Three rounds
+/// of interleaving (16-, 32- and 64-bit units), as SSE2 does it in 24 unpack instructions.
+inline void transpose8x8(Lanes16 (&rows)[8]) {
+  Lanes16 pairs[8];
+  for (int i = 0; i < 8; i += 2) {
+    pairs[i] = __builtin_shufflevector(rows[i], rows[i + 1], 0, 8, 1, 9, 2, 10, 3, 11);
+    pairs[i + 1] = __builtin_shufflevector(rows[i], rows[i + 1], 4, 12, 5, 13, 6, 14, 7, 15);
+  }
+  Lanes16 quads[8];
+  for (int i = 0; i < 8; i += 4)
+    for (int half = 0; half < 2; ++half) {
+      const Lanes16 a = pairs[i + half];
+      const Lanes16 b = pairs[i + half + 2];
+      quads[i + 2 * half] = __builtin_shufflevector(a, b, 0, 1, 8, 9, 2, 3, 10, 11);
+      quads[i + 2 * half + 1] = __builtin_shufflevector(a, b, 4, 5, 12, 13, 6, 7, 14, 15);
+    }
+  for (int i = 0; i < 4; ++i) {
+    rows[2 * i] = __builtin_shufflevector(quads[i], quads[i + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+    rows[2 * i + 1] = __builtin_shufflevector(quads[i], quads[i + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+}
+
 /// The smallest of the 8 lanes, in three halving steps.
 inline int smallest_lane(Lanes16 v) {
   v = lanes_min(v, __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3));

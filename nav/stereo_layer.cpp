@@ -5,6 +5,7 @@
 #include "consistency_lines.hpp"
 #include "matching_cost.hpp"
 #include "right_view.hpp"
+#include "simd_lanes.hpp"
 #include "work_report.hpp"
 
 #include <algorithm>
@@ -24,8 +25,7 @@ struct BandWorkspace {
       : wanted_low(static_cast<std::size_t>(tile_count(width)), 0, memory),
         wanted_high(static_cast<std::size_t>(tile_count(width)), 0, memory), layout(memory),
         costs(memory), jumps(static_cast<std::size_t>(width * kBandRows), 0, memory),
-        choice(memory), right(static_cast<std::size_t>(width), 0, memory),
-        right_band(static_cast<std::size_t>(width * kBandRows), 0, memory),
+        choice(memory), right_band(static_cast<std::size_t>(width * kBandRows), 0, memory),
         right_best(static_cast<std::size_t>(width * kBandRows), 0, memory) {}
 
   std::pmr::vector<int> wanted_low; // per tile
@@ -34,48 +34,71 @@ struct BandWorkspace {
   std::pmr::vector<std::uint16_t> costs;
   std::pmr::vector<std::uint16_t> jumps;
   BandChoice choice;
-  std::pmr::vector<std::int16_t> right;      // the right view of one line
   std::pmr::vector<std::int16_t> right_band; // the right view of every line, by lane
   std::pmr::vector<std::int16_t> right_best; // scratch of choose_right_view
 };
 
-// The large-step penalty between pixels x - 1 and x of each line of the band.
+// The large-step penalty between pixels x - 1 and x of each line of the band. Blocks of 8
+// columns are transposed into lanes so that 8 lines are compared at once.
 void edge_penalties(ImageView<const std::uint8_t> image, int y0, const DpPenalties& penalties,
                     std::pmr::vector<std::uint16_t>& jumps) {
   const int width = image.width();
-  for (int lane = 0; lane < kBandRows; ++lane) {
-    const std::uint8_t* row = image.row(std::min(y0 + lane, image.height() - 1));
-    for (int x = 1; x < width; ++x) {
-      const bool edge = std::abs(row[x] - row[x - 1]) > penalties.edge_threshold;
-      jumps[static_cast<std::size_t>(x * kBandRows + lane)] =
+  const std::uint8_t* rows[kBandRows];
+  for (int lane = 0; lane < kBandRows; ++lane)
+    rows[lane] = image.row(std::min(y0 + lane, image.height() - 1));
+  // Grey steps lie within 0..255, so clamping the threshold to -1..255 keeps every comparison.
+  const Lanes16 threshold = broadcast16(std::clamp(penalties.edge_threshold, -1, 255));
+  const Lanes16 at_edge = broadcast16(penalties.large_step_at_edge);
+  const Lanes16 plain = broadcast16(penalties.large_step);
+  std::uint16_t* out = jumps.data();
+  int x = 1;
+  Lanes16 previous{}; // column x0 - 1
+  for (int x0 = 0; x0 + kBandRows <= width; x0 += kBandRows) {
+    Lanes16 grey[kBandRows];
+    for (int lane = 0; lane < kBandRows; ++lane)
+      grey[lane] = widen_bytes(rows[lane] + x0);
+    transpose8x8(grey);
+    if (x0 == 0)
+      previous = grey[0];
+    for (int i = x0 == 0 ? 1 : 0; i < kBandRows; ++i) {
+      const Lanes16 step = grey[i] - previous;
+      const Lanes16 size = step < 0 ? -step : step;
+      store_lanes(out + (x0 + i) * kBandRows, size > threshold ? at_edge : plain);
+      previous = grey[i];
+    }
+    x = x0 + kBandRows;
+  }
+  for (; x < width; ++x)
+    for (int lane = 0; lane < kBandRows; ++lane) {
+      const bool edge = std::abs(rows[lane][x] - rows[lane][x - 1]) > penalties.edge_threshold;
+      out[x * kBandRows + lane] =
           static_cast<std::uint16_t>(edge ? penalties.large_step_at_edge : penalties.large_step);
     }
-  }
 }
 
 // The left-right check of one line of the band; writes the reliable disparities and returns
 // the largest (whole) one, -1 if none.
 template <class Meter>
-int check_lane(BandWorkspace& band, int lane, int y0, int tolerance, LayerOutput& output,
+int check_lane(const BandWorkspace& band, int lane, int y0, int tolerance, LayerOutput& output,
                Meter& meter) {
   const int width = output.disparity.width();
   const StridedLine<std::int16_t> left{band.choice.disparity.data() + lane, kBandRows};
-  for (int x = 0; x < width; ++x)
-    band.right[static_cast<std::size_t>(x)] =
-        band.right_band[static_cast<std::size_t>(x * kBandRows + lane)];
-  std::uint8_t* valid = output.valid.row(y0 + lane);
-  output.valid_pixels +=
-      static_cast<std::uint64_t>(check_line(left, band.right.data(), width, tolerance, valid));
-  report(meter, Work::consistency_check, static_cast<std::uint64_t>(width));
-  float* disparity = output.disparity.row(y0 + lane);
+  const StridedLine<std::int16_t> right{band.right_band.data() + lane, kBandRows};
   const float* subpixel = band.choice.subpixel.data() + lane;
-  constexpr float kUnknownHere = std::numeric_limits<float>::infinity();
+  std::uint8_t* valid = output.valid.row(y0 + lane);
+  float* disparity = output.disparity.row(y0 + lane);
   int largest = -1;
+  int reliable = 0;
   for (int x = 0; x < width; ++x) {
-    const bool reliable = valid[x] != 0;
-    disparity[x] = reliable ? subpixel[x * kBandRows] : kUnknownHere;
-    largest = reliable ? std::max(largest, static_cast<int>(left[x])) : largest;
+    const int d = left[x];
+    const bool agree = agrees(x, d, right, width, tolerance);
+    valid[x] = agree ? 255 : 0;
+    disparity[x] = agree ? subpixel[x * kBandRows] : kUnknown;
+    largest = agree ? std::max(largest, d) : largest;
+    reliable += agree ? 1 : 0;
   }
+  output.valid_pixels += static_cast<std::uint64_t>(reliable);
+  report(meter, Work::consistency_check, static_cast<std::uint64_t>(width));
   return largest;
 }
 
