@@ -1,6 +1,7 @@
 #include "marsokhod/nav/brightness_features.hpp"
 
 #include "bit_count.hpp"
+#include "census_rows.hpp"
 #include "work_report.hpp"
 
 #include <algorithm>
@@ -122,9 +123,12 @@ Image<std::uint32_t> brightness_features(ImageView<const std::uint8_t> image, Fe
   for (int y = 0; y < image.height(); ++y) {
     rows.load(y);
     std::uint32_t* out = features.row(y);
-    if (kind == FeatureKind::census3x3)
-      census_row<1>(rows, image.width(), bytes.data(), out);
-    else if (kind == FeatureKind::census5x5)
+    if (kind == FeatureKind::census3x3) {
+      const PaddedRows& loaded = rows;
+      detail::census3x3_row(loaded.row(-1) + 1, loaded.row(0) + 1, loaded.row(1) + 1, image.width(),
+                            bytes.data());
+      std::copy(bytes.begin(), bytes.end(), out);
+    } else if (kind == FeatureKind::census5x5)
       census_row<2>(rows, image.width(), bytes.data(), out);
     else
       rank_row(rows, image.width(), out);

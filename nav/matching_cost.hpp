@@ -2,12 +2,10 @@
 
 // Matching costs of a band of scan lines (private to the stereo matcher).
 
+#include "band_columns.hpp"
 #include "band_layout.hpp"
+#include "layer_features.hpp"
 
-#include "marsokhod/nav/brightness_features.hpp"
-#include "marsokhod/nav/image.hpp"
-
-#include <array>
 #include <cstdint>
 #include <memory_resource>
 
@@ -25,7 +23,7 @@ public:
 
   /// Loads the band whose first row is y0 (rows past the layer repeat its last row): the
   /// columns the layout's windows meet.
-  void load_band(const Image<std::uint32_t>& left, const Image<std::uint32_t>& right, int y0,
+  void load_band(const LayerFeatures& left, const LayerFeatures& right, int y0,
                  const BandLayout& layout);
 
   /// Fills costs (layout.total() cells of kBandRows lanes) for the band; returns the column
@@ -33,10 +31,6 @@ public:
   std::uint64_t compute(const BandLayout& layout, std::uint16_t* costs);
 
 private:
-  // A column is up to five 16-bit words: census3x3 packs its three bytes into two words, the
-  // 24-bit census5x5 needs five, the ranks of rank5x5 take one word per row.
-  static constexpr int kMaxWords = 5;
-
   template <class Distance>
   std::uint64_t compute_with(const BandLayout& layout, std::uint16_t* costs);
   template <class Distance>
@@ -44,14 +38,9 @@ private:
 
   FeatureKind kind_;
   int width_;
-  int pad_; // right columns exist from x = -pad_
-  int right_columns_;
-  // Column words by word, then column (left: x + 1 for x = -1..width; right: x + pad_ for
-  // x = -pad_..width), then lane.
-  std::array<std::pmr::vector<std::uint16_t>, kMaxWords> left_;
-  std::array<std::pmr::vector<std::uint16_t>, kMaxWords> right_;
-  // Column distances of one tile: kTileWidth + 2 columns by the tile's cells, by lane.
-  std::pmr::vector<std::uint16_t> column_cost_;
+  int pad_;           // right columns exist from x = -pad_
+  BandColumns left_;  // x = -1 .. width
+  BandColumns right_; // x = -pad_ .. width
 };
 
 /// The cost of a cell that is not a candidate: higher than any path through candidates can

@@ -3,6 +3,7 @@
 // Matching of one pyramid layer (private to the stereo matcher).
 
 #include "band_layout.hpp"
+#include "layer_features.hpp"
 
 #include "marsokhod/nav/image.hpp"
 #include "marsokhod/nav/stereo.hpp"
@@ -15,8 +16,8 @@ namespace marsokhod::nav::detail {
 /// One layer's images, features and search limits.
 struct LayerInput {
   ImageView<const std::uint8_t> left;
-  const Image<std::uint32_t>* left_features = nullptr;
-  const Image<std::uint32_t>* right_features = nullptr;
+  const LayerFeatures* left_features = nullptr;
+  const LayerFeatures* right_features = nullptr;
   DisparityLimits limits;
   /// The coarser layer's result, or null at the top layer (full search, ground prior).
   const CoarseGuide* guide = nullptr;

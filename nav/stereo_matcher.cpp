@@ -1,4 +1,5 @@
 #include "band_layout.hpp"
+#include "layer_features.hpp"
 #include "stereo_checks.hpp"
 #include "stereo_layer.hpp"
 #include "work_report.hpp"
@@ -113,10 +114,10 @@ StereoResult match_stereo(ImageView<const std::uint8_t> left, ImageView<const st
   std::optional<detail::LayerOutput> coarser;
   for (int level = levels - 1; level >= 0; --level) {
     const ImageView<const std::uint8_t> left_layer = pyramid.layer(level, Eye::left);
-    const Image<std::uint32_t> left_features =
-        brightness_features(left_layer, options.feature, meter, memory);
-    const Image<std::uint32_t> right_features =
-        brightness_features(pyramid.layer(level, Eye::right), options.feature, meter, memory);
+    const detail::LayerFeatures left_features =
+        detail::layer_features(left_layer, options.feature, meter, memory);
+    const detail::LayerFeatures right_features =
+        detail::layer_features(pyramid.layer(level, Eye::right), options.feature, meter, memory);
     std::optional<detail::CoarseGuide> guide;
     if (coarser)
       guide.emplace(coarser->disparity.view(), memory);
