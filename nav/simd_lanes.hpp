@@ -9,6 +9,10 @@
 #include <cstdint>
 #include <cstring>
 
+#ifdef __SSE__
+#include <xmmintrin.h>
+#endif
+
 namespace marsokhod::nav::detail {
 
 using Lanes16 = std::int16_t __attribute__((vector_size(16)));
@@ -41,6 +45,24 @@ inline Lanes32 broadcast32(std::uint32_t value) {
 
 inline Lanes16 lanes_min(Lanes16 a, Lanes16 b) {
   return a < b ? a : b;
+}
+
+/// a < b ? a : b and a < b ? b : a lane by lane. The vector conditional compiles to a compare
+/// and three logic instructions; SSE's minps (a < b ? a : b) and maxps (b < a ? b : a, so with
+/// the operands swapped) give the same lanes, signed zeros and NaNs included, in one.
+inline Floats4 floats_min(Floats4 a, Floats4 b) {
+#ifdef __SSE__
+  return std::bit_cast<Floats4>(_mm_min_ps(std::bit_cast<__m128>(a), std::bit_cast<__m128>(b)));
+#else
+  return a < b ? a : b;
+#endif
+}
+inline Floats4 floats_max(Floats4 a, Floats4 b) {
+#ifdef __SSE__
+  return std::bit_cast<Floats4>(_mm_max_ps(std::bit_cast<__m128>(b), std::bit_cast<__m128>(a)));
+#else
+  return a < b ? b : a;
+#endif
 }
 
 /// Lanes 0..3 or 4..7 as floats: each 16-bit lane is doubled into a 32-bit lane and shifted
@@ -81,6 +103,14 @@ inline void transpose8x8(Lanes16 (&rows)[8]) {
     rows[2 * i] = __builtin_shufflevector(quads[i], quads[i + 4], 0, 1, 2, 3, 8, 9, 10, 11);
     rows[2 * i + 1] = __builtin_shufflevector(quads[i], quads[i + 4], 4, 5, 6, 7, 12, 13, 14, 15);
   }
+}
+
+/// Lanes 0..3 or 4..7 of a mask (0 or -1 per lane) as a mask of 32-bit lanes.
+inline Ints4 low_mask(Lanes16 v) {
+  return std::bit_cast<Ints4>(__builtin_shufflevector(v, v, 0, 0, 1, 1, 2, 2, 3, 3));
+}
+inline Ints4 high_mask(Lanes16 v) {
+  return std::bit_cast<Ints4>(__builtin_shufflevector(v, v, 4, 4, 5, 5, 6, 6, 7, 7));
 }
 
 /// The smallest of the 8 lanes, in three halving steps.
