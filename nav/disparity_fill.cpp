@@ -4,6 +4,7 @@
 #include "work_report.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
@@ -13,6 +14,24 @@ namespace {
 
 constexpr float kUnknown = std::numeric_limits<float>::infinity();
 
+// The first x from `x` on (or width) whose validity is zero (Zero) or not zero (!Zero), eight
+// bytes at a time where a whole word is still in the run: long runs are the common case.
+template <bool Zero>
+int run_end(const std::uint8_t* valid, int x, int width) {
+  constexpr std::uint64_t kLow = 0x0101010101010101ULL;
+  constexpr std::uint64_t kHigh = 0x8080808080808080ULL;
+  for (; x + 8 <= width; x += 8) {
+    std::uint64_t word;
+    std::memcpy(&word, valid + x, sizeof word);
+    const bool has_zero = ((word - kLow) & ~word & kHigh) != 0;
+    if (Zero ? word != 0 : has_zero)
+      break;
+  }
+  while (x < width && (valid[x] == 0) == Zero)
+    ++x;
+  return x;
+}
+
 // Fills the unreliable runs of one row; returns false when the row has no reliable pixel.
 bool fill_row(float* disparity, const std::uint8_t* valid, int width, std::uint64_t& written) {
   int x = 0;
@@ -20,12 +39,11 @@ bool fill_row(float* disparity, const std::uint8_t* valid, int width, std::uint6
   while (x < width) {
     if (valid[x] != 0) {
       any_reliable = true;
-      ++x;
+      x = run_end<false>(valid, x, width);
       continue;
     }
     const int run_start = x;
-    while (x < width && valid[x] == 0)
-      ++x;
+    x = run_end<true>(valid, x, width);
     const float before = run_start > 0 ? disparity[run_start - 1] : kUnknown;
     const float after = x < width ? disparity[x] : kUnknown;
     const float value = std::min(before, after);
@@ -58,11 +76,17 @@ using detail::Floats4;
 
 template <class T>
 T smaller(T a, T b) {
-  return a < b ? a : b;
+  if constexpr (std::is_same_v<T, Floats4>)
+    return detail::floats_min(a, b);
+  else
+    return a < b ? a : b;
 }
 template <class T>
 T larger(T a, T b) {
-  return a < b ? b : a;
+  if constexpr (std::is_same_v<T, Floats4>)
+    return detail::floats_max(a, b);
+  else
+    return a < b ? b : a;
 }
 template <class T>
 T middle_of(T a, T b, T c) {
@@ -95,9 +119,10 @@ void store_as(float* to, T value) {
     detail::store_lanes(to, value);
 }
 
+// The columns go by value: through a reference, every store could change them.
 void sort_columns(const float* above, const float* here, const float* below, int width,
-                  const SortedColumns& out) {
-  for_each_lane_group(0, width, [&]<class T>(int x) {
+                  SortedColumns out) {
+  for_each_lane_group(0, width, [=]<class T>(int x) {
     const T a = load_as<T>(above + x);
     const T b = load_as<T>(here + x);
     const T c = load_as<T>(below + x);
@@ -113,8 +138,8 @@ void sort_columns(const float* above, const float* here, const float* below, int
 // The median of nine from three sorted columns: the median of the largest low, the middle
 // middle and the smallest high (exact: Paeth, Graphics Gems, 1990). Columns x-1, x, x+1 for
 // x in 1 .. width-2.
-void inner_medians(const SortedColumns& columns, int width, float* out) {
-  for_each_lane_group(1, width - 1, [&]<class T>(int x) {
+void inner_medians(SortedColumns columns, int width, float* out) {
+  for_each_lane_group(1, width - 1, [=]<class T>(int x) {
     const T low = larger(larger(load_as<T>(columns.low + x - 1), load_as<T>(columns.low + x)),
                          load_as<T>(columns.low + x + 1));
     const T high = smaller(smaller(load_as<T>(columns.high + x - 1), load_as<T>(columns.high + x)),
