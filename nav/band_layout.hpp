@@ -7,11 +7,10 @@
 // column and disparity by disparity. A tile (kTileWidth columns of the band) searches one
 // window of disparities, the hull of what its pixels want.
 
-#include "marsokhod/nav/image.hpp"
-
-#include <cstdint>
+#include <cstddef>
 #include <memory_resource>
 #include <span>
+#include <vector>
 
 namespace marsokhod::nav::detail {
 
@@ -55,24 +54,6 @@ private:
   std::pmr::vector<int> first_;
   std::pmr::vector<int> cells_;
   std::pmr::vector<std::size_t> offset_;
-};
-
-/// The coarser layer's disparities (finite, not negative) as initial shifts for the next finer
-/// layer: a tile of the
-/// finer layer searches twice the smallest to twice the largest coarse disparity of the coarse
-/// pixels under it and their 3x3 neighbours, widened by `band` on each side. Taking the
-/// neighbourhood rather than one coarse pixel keeps both sides of a depth edge in reach.
-class CoarseGuide {
-public:
-  CoarseGuide(ImageView<const float> coarse, std::pmr::memory_resource* memory);
-
-  /// Wanted ranges of the tiles of the band whose first row is y0 (finer layer, width pixels).
-  void wanted(int y0, int width, int band, std::span<int> low, std::span<int> high) const;
-  std::uint64_t pixels() const { return low_.size(); }
-
-private:
-  Image<std::int32_t> low_;  // floor of the 3x3 minimum
-  Image<std::int32_t> high_; // ceiling of the 3x3 maximum
 };
 
 } // namespace marsokhod::nav::detail

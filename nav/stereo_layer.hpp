@@ -3,6 +3,7 @@
 // Matching of one pyramid layer (private to the stereo matcher).
 
 #include "band_layout.hpp"
+#include "coarse_guide.hpp"
 #include "layer_features.hpp"
 
 #include "marsokhod/nav/image.hpp"
@@ -20,7 +21,7 @@ struct LayerInput {
   const LayerFeatures* right_features = nullptr;
   DisparityLimits limits;
   /// The coarser layer's result, or null at the top layer (full search, ground prior).
-  const CoarseGuide* guide = nullptr;
+  CoarseGuide* guide = nullptr;
   /// Whether to run the left-right check; without it every pixel counts as reliable. The
   /// coarse layers, whose disparities only seed the next layer's search, skip it, except the
   /// top layer under the ground prior, which needs reliable disparities to bound the rows above.

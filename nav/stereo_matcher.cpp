@@ -1,4 +1,5 @@
 #include "band_layout.hpp"
+#include "coarse_guide.hpp"
 #include "layer_features.hpp"
 #include "stereo_checks.hpp"
 #include "stereo_layer.hpp"
