@@ -46,6 +46,9 @@ inline Lanes32 broadcast32(std::uint32_t value) {
 inline Lanes16 lanes_min(Lanes16 a, Lanes16 b) {
   return a < b ? a : b;
 }
+inline Lanes16 lanes_max(Lanes16 a, Lanes16 b) {
+  return a < b ? b : a;
+}
 
 /// a < b ? a : b and a < b ? b : a lane by lane. The vector conditional compiles to a compare
 /// and three logic instructions; SSE's minps (a < b ? a : b) and maxps (b < a ? b : a, so with

@@ -2,7 +2,7 @@
 
 #include "band_dp.hpp"
 #include "band_layout.hpp"
-#include "consistency_lines.hpp"
+#include "band_output.hpp"
 #include "matching_cost.hpp"
 #include "right_view.hpp"
 #include "simd_lanes.hpp"
@@ -21,12 +21,13 @@ constexpr float kUnknown = std::numeric_limits<float>::infinity();
 
 // Buffers reused by every band of the layer.
 struct BandWorkspace {
-  BandWorkspace(int width, std::pmr::memory_resource* memory)
+  BandWorkspace(int width, int max_disparity, std::pmr::memory_resource* memory)
       : wanted_low(static_cast<std::size_t>(tile_count(width)), 0, memory),
         wanted_high(static_cast<std::size_t>(tile_count(width)), 0, memory), layout(memory),
         costs(memory), jumps(static_cast<std::size_t>(width * kBandRows), 0, memory),
         choice(memory), right_band(static_cast<std::size_t>(width * kBandRows), 0, memory),
-        right_best(static_cast<std::size_t>(width * kBandRows), 0, memory) {}
+        right_best(static_cast<std::size_t>(width * kBandRows), 0, memory),
+        right_lines(width, max_disparity, memory) {}
 
   std::pmr::vector<int> wanted_low; // per tile
   std::pmr::vector<int> wanted_high;
@@ -36,6 +37,7 @@ struct BandWorkspace {
   BandChoice choice;
   std::pmr::vector<std::int16_t> right_band; // the right view of every line, by lane
   std::pmr::vector<std::int16_t> right_best; // scratch of choose_right_view
+  RightLines right_lines;                    // the right view of every line, by line
 };
 
 // The large-step penalty between pixels x - 1 and x of each line of the band. Blocks of 8
@@ -76,46 +78,6 @@ void edge_penalties(ImageView<const std::uint8_t> image, int y0, const DpPenalti
     }
 }
 
-// The left-right check of one line of the band; writes the reliable disparities and returns
-// the largest (whole) one, -1 if none.
-template <class Meter>
-int check_lane(const BandWorkspace& band, int lane, int y0, int tolerance, LayerOutput& output,
-               Meter& meter) {
-  const int width = output.disparity.width();
-  const StridedLine<std::int16_t> left{band.choice.disparity.data() + lane, kBandRows};
-  const StridedLine<std::int16_t> right{band.right_band.data() + lane, kBandRows};
-  const float* subpixel = band.choice.subpixel.data() + lane;
-  std::uint8_t* valid = output.valid.row(y0 + lane);
-  float* disparity = output.disparity.row(y0 + lane);
-  int largest = -1;
-  int reliable = 0;
-  for (int x = 0; x < width; ++x) {
-    const int d = left[x];
-    const bool agree = agrees(x, d, right, width, tolerance);
-    valid[x] = agree ? 255 : 0;
-    disparity[x] = agree ? subpixel[x * kBandRows] : kUnknown;
-    largest = agree ? std::max(largest, d) : largest;
-    reliable += agree ? 1 : 0;
-  }
-  output.valid_pixels += static_cast<std::uint64_t>(reliable);
-  report(meter, Work::consistency_check, static_cast<std::uint64_t>(width));
-  return largest;
-}
-
-// Without the left-right check: every pixel keeps its choice and counts as reliable.
-void accept_all(const BandChoice& choice, int y0, int rows, LayerOutput& output) {
-  const int width = output.disparity.width();
-  for (int lane = 0; lane < rows; ++lane) {
-    float* disparity = output.disparity.row(y0 + lane);
-    std::uint8_t* valid = output.valid.row(y0 + lane);
-    for (int x = 0; x < width; ++x) {
-      disparity[x] = choice.subpixel[static_cast<std::size_t>(x * kBandRows + lane)];
-      valid[x] = 255;
-    }
-  }
-  output.valid_pixels += static_cast<std::uint64_t>(width * rows);
-}
-
 } // namespace
 
 template <class Meter>
@@ -125,7 +87,7 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
   const int height = input.left.height();
   LayerOutput output{Image<float>(width, height, 1, kUnknown, memory),
                      Image<std::uint8_t>(width, height, 1, 0, memory), 0, 0};
-  BandWorkspace band(width, memory);
+  BandWorkspace band(width, input.limits.high, memory);
   MatchingCost matching(options.feature, width, input.limits.high, memory);
   BandDp dp(width, input.limits.high, memory);
   const bool prior = options.ground_prior && input.guide == nullptr;
@@ -158,9 +120,8 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
            band.choice);
     report(meter, Work::dp_transition, 2 * cells);
     report(meter, Work::disparity_choice, cells);
-    int largest = -1;
     if (!input.check) {
-      accept_all(band.choice, y0, rows, output);
+      accept_band(band.choice, y0, rows, output);
       output.candidates += cells;
       continue;
     }
@@ -169,8 +130,10 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
            choose_right_view(band.layout, dp.aggregated(), band.right_band.data(),
                              band.right_best.data()) *
                static_cast<std::uint64_t>(rows));
-    for (int lane = 0; lane < rows; ++lane)
-      largest = std::max(largest, check_lane(band, lane, y0, options.lr_tolerance, output, meter));
+    band.right_lines.load(band.right_band.data());
+    const int largest =
+        check_band(band.choice, band.right_lines, y0, rows, options.lr_tolerance, output);
+    report(meter, Work::consistency_check, pixels);
     output.candidates += cells;
     if (prior && largest >= 0)
       bound = largest + options.prior_margin;
