@@ -33,6 +33,7 @@ Lanes16 forward_pixel(std::uint16_t* path, const std::uint16_t* cost, std::uint1
   Lanes16 smallest = broadcast16(kUnreachable);
   Lanes16 below = load_lanes<Lanes16>(path - kBandRows);
   Lanes16 here = load_lanes<Lanes16>(path);
+#pragma GCC unroll 2
   for (int k = 0; k < cells; ++k) {
     const Lanes16 above = load_lanes<Lanes16>(path + (k + 1) * kBandRows);
     const Lanes16 best = step(below, here, above);
@@ -84,6 +85,7 @@ PixelChoice backward_pixel(std::uint16_t* path, const std::uint16_t* cost, std::
     const int end = std::min(cells, start + kChunk);
     Lanes16 key = broadcast16(0x7FFF);
     Lanes16 in_chunk{};
+#pragma GCC unroll 2
     for (int k = start; k < end; ++k) {
       const Lanes16 above = load_lanes<Lanes16>(path + (k + 1) * kBandRows);
       const Lanes16 total = load_lanes<Lanes16>(cost + k * kBandRows) + step(below, here, above);
@@ -109,23 +111,21 @@ void clear_stale(std::uint16_t* path_origin, int old_first, int old_cells, int f
       store_lanes(path_origin + (d + 1) * kBandRows, unreachable);
 }
 
-// The S of the cells beside each lane's chosen one, unreachable where there is none. Exactly
-// one cell matches each wanted index, so masks and ors gather it without a select per cell.
+// The S of the cells beside each lane's chosen one, unreachable where there is none. Read lane
+// by lane: the cell before the first and the one after the last exist (a neighbouring pixel's
+// or the buffer's margin) and are masked out.
 void neighbours(const std::uint16_t* s, int cells, Lanes16 index, Lanes16& before, Lanes16& after) {
-  const Lanes16 want_before = index - 1;
-  const Lanes16 want_after = index + 1;
-  Lanes16 found_before{};
-  Lanes16 found_after{};
-  Lanes16 cell{};
-  for (int k = 0; k < cells; ++k) {
-    const Lanes16 here = load_lanes<Lanes16>(s + k * kBandRows);
-    found_before |= here & (cell == want_before);
-    found_after |= here & (cell == want_after);
-    cell += 1;
+  const Lanes16 at = index * kBandRows + Lanes16{0, 1, 2, 3, 4, 5, 6, 7};
+  Lanes16 found_before;
+  Lanes16 found_after;
+  for (int lane = 0; lane < kBandRows; ++lane) {
+    const std::uint16_t* cell = s + at[lane];
+    found_before[lane] = static_cast<std::int16_t>(cell[-kBandRows]);
+    found_after[lane] = static_cast<std::int16_t>(cell[kBandRows]);
   }
   const Lanes16 unreachable = broadcast16(kUnreachable);
   before = index > 0 ? found_before : unreachable;
-  after = want_after < broadcast16(cells) ? found_after : unreachable;
+  after = index + 1 < broadcast16(cells) ? found_after : unreachable;
 }
 
 // Vertex of the parabola through (-1, before), (0, best), (1, after), within half a pixel,
@@ -176,7 +176,7 @@ void BandDp::forward_pass(const BandLayout& layout, const std::uint16_t* costs,
       const int x = x0 + p;
       const std::size_t at = tile_at + static_cast<std::size_t>(p * cells * kBandRows);
       const Lanes16 jump = x == 0 ? Lanes16{} : load_lanes<Lanes16>(jumps + x * kBandRows);
-      previous_min = forward_pixel(path, costs + at, forward_.data() + at, cells,
+      previous_min = forward_pixel(path, costs + at, aggregated_cells() + at, cells,
                                    Step(previous_min, small_step, jump));
       if (p == 0 && (first != window_first || cells != window_cells)) {
         clear_stale(origin, window_first, window_cells, first, cells);
@@ -206,7 +206,7 @@ void BandDp::backward_pass(const BandLayout& layout, const std::uint16_t* costs,
       const Lanes16 jump =
           x == width_ - 1 ? Lanes16{} : load_lanes<Lanes16>(jumps + (x + 1) * kBandRows);
       // S replaces the forward costs, cell by cell, once they are used.
-      std::uint16_t* s = forward_.data() + at;
+      std::uint16_t* s = aggregated_cells() + at;
       const PixelChoice best =
           backward_pixel(path, costs + at, s, cells, Step(previous_min, small_step, jump));
       previous_min = best.smallest;
@@ -229,8 +229,8 @@ void BandDp::backward_pass(const BandLayout& layout, const std::uint16_t* costs,
 
 void BandDp::run(const BandLayout& layout, const std::uint16_t* costs, const std::uint16_t* jumps,
                  int small_step, BandChoice& choice) {
-  if (forward_.size() < layout.total() * kBandRows)
-    forward_.resize(layout.total() * kBandRows);
+  if (forward_.size() < (layout.total() + 2) * kBandRows)
+    forward_.resize((layout.total() + 2) * kBandRows);
   const std::size_t size = static_cast<std::size_t>(width_ * kBandRows);
   choice.disparity.resize(size);
   choice.subpixel.resize(size);

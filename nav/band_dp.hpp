@@ -32,7 +32,7 @@ public:
            int small_step, BandChoice& choice);
 
   /// S of every cell of the last band run, laid out as its costs were.
-  const std::uint16_t* aggregated() const { return forward_.data(); }
+  const std::uint16_t* aggregated() const { return forward_.data() + kBandRows; }
 
 private:
   void forward_pass(const BandLayout& layout, const std::uint16_t* costs,
@@ -40,7 +40,10 @@ private:
   void backward_pass(const BandLayout& layout, const std::uint16_t* costs,
                      const std::uint16_t* jumps, int small_step, BandChoice& choice);
 
+  std::uint16_t* aggregated_cells() { return forward_.data() + kBandRows; }
+
   int width_;
+  // The forward pass's L - C, then S, cell by cell, with one cell of margin on each side.
   std::pmr::vector<std::uint16_t> forward_;
   // Path costs of the last pixel by disparity (d = -1 .. max + 1 at (d + 1) * kBandRows),
   // unreachable outside the pixel's window.
