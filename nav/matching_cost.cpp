@@ -9,7 +9,6 @@ namespace marsokhod::nav::detail {
 namespace {
 
 using Bytes16 = std::uint8_t __attribute__((vector_size(16)));
-using Bytes8 = std::uint8_t __attribute__((vector_size(8)));
 
 // census3x3: the Hamming distance of each of the ten rows' bytes, then lane i sums bytes
 // i .. i + 2, the rows of line i's window column.
@@ -23,8 +22,9 @@ struct ByteColumnDistance {
                                                  12, 13, 14, 15, 16) +
                          __builtin_shufflevector(counts, none, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12,
                                                  13, 14, 15, 16, 17);
-    const Bytes8 low = __builtin_shufflevector(sums, sums, 0, 1, 2, 3, 4, 5, 6, 7);
-    return __builtin_convertvector(low, Lanes16);
+    // Bytes 0..7 interleaved with zero bytes: one unpack.
+    return std::bit_cast<Lanes16>(__builtin_shufflevector(sums, none, 0, 16, 1, 17, 2, 18, 3, 19, 4,
+                                                          20, 5, 21, 6, 22, 7, 23));
   }
 };
 

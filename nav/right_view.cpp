@@ -15,20 +15,29 @@ std::uint64_t choose_right_view(const BandLayout& layout, const std::uint16_t* a
   std::uint64_t examined = 0;
   // Left pixels in increasing order meet each right pixel in increasing disparity, so the
   // strict comparison keeps the smaller disparity on a tie.
-  for (int x = 0; x < width; ++x) {
-    const int first = layout.first(x);
-    const int reach = std::min(layout.cells(x), x - first + 1);
-    const std::uint16_t* s = aggregated + layout.offset(x) * kBandRows;
-    for (int k = 0; k < reach; ++k) {
-      const std::size_t r = static_cast<std::size_t>(x - first - k) * kBandRows;
-      const Lanes16 cost = load_lanes<Lanes16>(s + k * kBandRows);
-      const Lanes16 held = load_lanes<Lanes16>(best + r);
-      const Lanes16 better = cost < held;
-      store_lanes(best + r, better ? cost : held);
-      const Lanes16 chosen = load_lanes<Lanes16>(disparity + r);
-      store_lanes(disparity + r, better ? broadcast16(first + k) : chosen);
+  for (int x0 = 0; x0 < width; x0 += kTileWidth) {
+    const int first = layout.first(x0);
+    const int cells = layout.cells(x0);
+    const std::uint16_t* s = aggregated + layout.offset(x0) * kBandRows;
+    for (int x = x0; x < std::min(x0 + kTileWidth, width); ++x, s += cells * kBandRows) {
+      const int reach = std::min(cells, x - first + 1);
+      if (reach <= 0)
+        continue;
+      // Right pixel x - first - k, from the right end of the pixel's reach down.
+      std::int16_t* held_cost = best + static_cast<std::ptrdiff_t>(x - first) * kBandRows;
+      std::int16_t* held_disparity = disparity + static_cast<std::ptrdiff_t>(x - first) * kBandRows;
+      Lanes16 candidate = broadcast16(first);
+      for (int k = 0; k < reach; ++k) {
+        const Lanes16 cost = load_lanes<Lanes16>(s + k * kBandRows);
+        const Lanes16 held = load_lanes<Lanes16>(held_cost - k * kBandRows);
+        const Lanes16 better = cost < held;
+        store_lanes(held_cost - k * kBandRows, lanes_min(cost, held));
+        const Lanes16 chosen = load_lanes<Lanes16>(held_disparity - k * kBandRows);
+        store_lanes(held_disparity - k * kBandRows, better ? candidate : chosen);
+        candidate += 1;
+      }
+      examined += static_cast<std::uint64_t>(reach);
     }
-    examined += static_cast<std::uint64_t>(std::max(reach, 0));
   }
   return examined;
 }
