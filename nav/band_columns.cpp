@@ -123,18 +123,6 @@ void load_words(FeatureKind kind, const Image<std::uint32_t>& features, int y0, 
 
 } // namespace
 
-int column_stride(FeatureKind kind) {
-  switch (kind) {
-  case FeatureKind::census3x3:
-    return kBlock / 2;
-  case FeatureKind::census5x5:
-    return 5 * kBandRows;
-  case FeatureKind::rank5x5:
-    return 3 * kBandRows;
-  }
-  return 0;
-}
-
 BandColumns::BandColumns(FeatureKind kind, int first, int count, std::pmr::memory_resource* memory)
     : kind_(kind), first_(first), count_(count), stride_(column_stride(kind)),
       data_(static_cast<std::size_t>(count) * static_cast<std::size_t>(stride_), 0, memory) {}

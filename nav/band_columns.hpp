@@ -19,6 +19,20 @@ namespace marsokhod::nav::detail {
 /// vector holds the ten rows the band's eight windows meet. The wider kinds store words by
 /// lane: census5x5 five (the low 16 bits of each row, then the high 8 bits of the first two
 /// rows and of the third), rank5x5 three (one rank a row).
+/// 16-bit words of one column: census3x3 8 (16 bytes), census5x5 5 x kBandRows, rank5x5
+/// 3 x kBandRows.
+constexpr int column_stride(FeatureKind kind) {
+  switch (kind) {
+  case FeatureKind::census3x3:
+    return 8;
+  case FeatureKind::census5x5:
+    return 5 * kBandRows;
+  case FeatureKind::rank5x5:
+    return 3 * kBandRows;
+  }
+  return 0;
+}
+
 class BandColumns {
 public:
   /// Columns first .. first + count - 1.
@@ -40,9 +54,5 @@ private:
   int stride_;
   std::pmr::vector<std::uint16_t> data_;
 };
-
-/// 16-bit words of one column: census3x3 8 (16 bytes), census5x5 5 x kBandRows, rank5x5
-/// 3 x kBandRows.
-int column_stride(FeatureKind kind);
 
 } // namespace marsokhod::nav::detail

@@ -13,6 +13,7 @@ using Bytes16 = std::uint8_t __attribute__((vector_size(16)));
 // census3x3: the Hamming distance of each of the ten rows' bytes, then lane i sums bytes
 // i .. i + 2, the rows of line i's window column.
 struct ByteColumnDistance {
+  static constexpr std::ptrdiff_t stride = column_stride(FeatureKind::census3x3);
   static Lanes16 apply(const std::uint16_t* left, const std::uint16_t* right) {
     const auto counts = std::bit_cast<Bytes16>(
         byte_bit_counts(load_lanes<Bits16>(left) ^ load_lanes<Bits16>(right)));
@@ -30,6 +31,7 @@ struct ByteColumnDistance {
 
 // census5x5: Hamming distance summed over the words.
 struct WordBitDistance {
+  static constexpr std::ptrdiff_t stride = column_stride(FeatureKind::census5x5);
   static Lanes16 apply(const std::uint16_t* left, const std::uint16_t* right) {
     Bits16 bytes{};
     for (int word = 0; word < 5; ++word)
@@ -41,6 +43,7 @@ struct WordBitDistance {
 
 // rank5x5: absolute difference summed over the words.
 struct RankDistance {
+  static constexpr std::ptrdiff_t stride = column_stride(FeatureKind::rank5x5);
   static Lanes16 apply(const std::uint16_t* left, const std::uint16_t* right) {
     Lanes16 sum{};
     for (int word = 0; word < 3; ++word) {
@@ -75,24 +78,34 @@ void MatchingCost::load_band(const LayerFeatures& left, const LayerFeatures& rig
 template <class Distance>
 void MatchingCost::tile_costs(const BandLayout& layout, int first_pixel, int pixels,
                               std::uint16_t* costs) {
+  constexpr std::ptrdiff_t kStride = Distance::stride;
   const int first = layout.first(first_pixel);
   const int cells = layout.cells(first_pixel);
-  const std::ptrdiff_t stride = left_.stride();
   const std::ptrdiff_t pixel_stride = static_cast<std::ptrdiff_t>(cells) * kBandRows;
-  const std::uint16_t* left = left_.column(first_pixel - 1);
-  std::uint16_t* out = costs + layout.offset(first_pixel) * kBandRows;
+  const std::uint16_t* tile_left = left_.column(first_pixel - 1);
+  std::uint16_t* tile_out = costs + layout.offset(first_pixel) * kBandRows;
   const Lanes16 padding = broadcast16(kPaddingCost);
   for (int k = 0; k < cells; ++k) {
     const int d = first + k;
+    const std::uint16_t* left = tile_left;
     const std::uint16_t* right = right_.column(first_pixel - 1 - d);
+    std::uint16_t* out = tile_out + k * kBandRows;
     Lanes16 before = Distance::apply(left, right);
-    Lanes16 here = Distance::apply(left + stride, right + stride);
+    Lanes16 here = Distance::apply(left + kStride, right + kStride);
+    left += 2 * kStride;
+    right += 2 * kStride;
     // Pixels left of x = d reach no right pixel at this disparity.
     const int reachable_from = std::clamp(d - first_pixel, 0, pixels);
-    std::uint16_t* cell = out + k * kBandRows;
-    for (int p = 0; p < pixels; ++p) {
-      const Lanes16 after = Distance::apply(left + (p + 2) * stride, right + (p + 2) * stride);
-      store_lanes(cell + p * pixel_stride, p < reachable_from ? padding : before + here + after);
+    int p = 0;
+    for (; p < reachable_from; ++p, left += kStride, right += kStride, out += pixel_stride) {
+      const Lanes16 after = Distance::apply(left, right);
+      store_lanes(out, padding);
+      before = here;
+      here = after;
+    }
+    for (; p < pixels; ++p, left += kStride, right += kStride, out += pixel_stride) {
+      const Lanes16 after = Distance::apply(left, right);
+      store_lanes(out, before + here + after);
       before = here;
       here = after;
     }
