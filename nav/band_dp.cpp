@@ -73,6 +73,31 @@ struct PixelChoice {
   }
 };
 
+// The backward pass over cells start .. end - 1 of one pixel, at most one chunk: `below` and
+// `here` carry the previous pixel's path costs at k - 1 and k across calls. Returns the
+// chunk's smallest key.
+inline Lanes16 backward_chunk(std::uint16_t* path, const std::uint16_t* cost,
+                              std::uint16_t* forward, int start, int end, const Step& step,
+                              Lanes16& below, Lanes16& here, Lanes16& smallest) {
+  const Lanes16 cap = broadcast16(kPaddingCost);
+  Lanes16 key = broadcast16(0x7FFF);
+  Lanes16 in_chunk{};
+#pragma GCC unroll 2
+  for (int k = start; k < end; ++k) {
+    const Lanes16 above = load_lanes<Lanes16>(path + (k + 1) * kBandRows);
+    const Lanes16 total = load_lanes<Lanes16>(cost + k * kBandRows) + step(below, here, above);
+    store_lanes(path + k * kBandRows, total);
+    smallest = lanes_min(smallest, total);
+    const Lanes16 s = load_lanes<Lanes16>(forward + k * kBandRows) + total;
+    store_lanes(forward + k * kBandRows, s);
+    key = lanes_min(key, (lanes_min(s, cap) << kChunkBits) + in_chunk);
+    in_chunk += 1;
+    below = here;
+    here = above;
+  }
+  return key;
+}
+
 // The backward path costs of one pixel in place, as forward_pixel(); `forward` holds the
 // forward pass's L - C, which becomes S = L_forward + L_backward - C.
 PixelChoice backward_pixel(std::uint16_t* path, const std::uint16_t* cost, std::uint16_t* forward,
@@ -80,25 +105,15 @@ PixelChoice backward_pixel(std::uint16_t* path, const std::uint16_t* cost, std::
   PixelChoice choice;
   Lanes16 below = load_lanes<Lanes16>(path - kBandRows);
   Lanes16 here = load_lanes<Lanes16>(path);
-  const Lanes16 cap = broadcast16(kPaddingCost);
+  if (cells <= kChunk) {
+    choice.fold(backward_chunk(path, cost, forward, 0, cells, step, below, here, choice.smallest),
+                0);
+    return choice;
+  }
   for (int start = 0; start < cells; start += kChunk) {
     const int end = std::min(cells, start + kChunk);
-    Lanes16 key = broadcast16(0x7FFF);
-    Lanes16 in_chunk{};
-#pragma GCC unroll 2
-    for (int k = start; k < end; ++k) {
-      const Lanes16 above = load_lanes<Lanes16>(path + (k + 1) * kBandRows);
-      const Lanes16 total = load_lanes<Lanes16>(cost + k * kBandRows) + step(below, here, above);
-      store_lanes(path + k * kBandRows, total);
-      choice.smallest = lanes_min(choice.smallest, total);
-      const Lanes16 s = load_lanes<Lanes16>(forward + k * kBandRows) + total;
-      store_lanes(forward + k * kBandRows, s);
-      key = lanes_min(key, (lanes_min(s, cap) << kChunkBits) + in_chunk);
-      in_chunk += 1;
-      below = here;
-      here = above;
-    }
-    choice.fold(key, start);
+    choice.fold(backward_chunk(path, cost, forward, start, end, step, below, here, choice.smallest),
+                start);
   }
   return choice;
 }
