@@ -10,7 +10,6 @@ namespace marsokhod::nav::detail {
 namespace {
 
 constexpr float kUnknown = std::numeric_limits<float>::infinity();
-using Bytes16 = std::uint8_t __attribute__((vector_size(16)));
 using Bytes8 = std::uint8_t __attribute__((vector_size(8)));
 
 // Transposes four vectors of four floats.
@@ -39,9 +38,9 @@ struct BandRows {
 };
 
 // Writes columns x0 .. x0 + 7: `valid[lane]` holds, for line `lane`, -1 in each column whose
-// pixel is reliable, 0 elsewhere.
-void store_block(const float* subpixel, const Lanes16 (&valid)[kBandRows], int x0,
-                 const BandRows& out) {
+// pixel is reliable, 0 elsewhere. The rows go by value: through a reference, every store could
+// change them.
+void store_block(const float* subpixel, const Lanes16 (&valid)[kBandRows], int x0, BandRows out) {
   const Floats4 unknown = Floats4{} + kUnknown;
   for (int group = 0; group < kBandRows; group += kFloatLanes) {
     for (int half = 0; half < kBandRows; half += kFloatLanes) {
@@ -58,9 +57,8 @@ void store_block(const float* subpixel, const Lanes16 (&valid)[kBandRows], int x
     }
   }
   for (int lane = 0; lane < out.rows; ++lane) {
-    const auto bytes = std::bit_cast<Bytes16>(valid[lane]);
-    const Bytes8 low = __builtin_shufflevector(bytes, bytes, 0, 2, 4, 6, 8, 10, 12, 14);
-    store_lanes(out.valid[lane] + x0, low);
+    // -1 becomes 255, 0 stays 0.
+    store_lanes(out.valid[lane] + x0, __builtin_convertvector(valid[lane], Bytes8));
   }
 }
 

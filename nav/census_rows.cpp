@@ -20,22 +20,28 @@ T load_at(const std::uint8_t* from) {
   }
 }
 
-// `bit` where neighbour n is darker than centre c, for one pixel or 16 at once.
+// `bit` where neighbour n is not darker than centre c, for one pixel or 16 at once: n >= c is
+// one saturating subtraction and one comparison in SSE2, n < c two comparisons.
 template <class T>
-T darker(T n, T c, std::uint8_t bit) {
+T not_darker(T n, T c, std::uint8_t bit) {
   if constexpr (sizeof(T) == 1)
-    return static_cast<T>(n < c ? bit : 0);
+    return static_cast<T>(n >= c ? bit : 0);
   else
-    return std::bit_cast<T>(n < c) & bit;
+    return std::bit_cast<T>(n >= c) & bit;
 }
 
+// The eight bits cover the byte, so the darker neighbours are the complement of the others.
 template <class T>
 T census_at(const std::uint8_t* above, const std::uint8_t* here, const std::uint8_t* below, int x) {
   const T c = load_at<T>(here + x);
-  return darker(load_at<T>(above + x - 1), c, 0x80) | darker(load_at<T>(above + x), c, 0x40) |
-         darker(load_at<T>(above + x + 1), c, 0x20) | darker(load_at<T>(here + x - 1), c, 0x10) |
-         darker(load_at<T>(here + x + 1), c, 0x08) | darker(load_at<T>(below + x - 1), c, 0x04) |
-         darker(load_at<T>(below + x), c, 0x02) | darker(load_at<T>(below + x + 1), c, 0x01);
+  const T others =
+      not_darker(load_at<T>(above + x - 1), c, 0x80) | not_darker(load_at<T>(above + x), c, 0x40) |
+      not_darker(load_at<T>(above + x + 1), c, 0x20) |
+      not_darker(load_at<T>(here + x - 1), c, 0x10) |
+      not_darker(load_at<T>(here + x + 1), c, 0x08) |
+      not_darker(load_at<T>(below + x - 1), c, 0x04) | not_darker(load_at<T>(below + x), c, 0x02) |
+      not_darker(load_at<T>(below + x + 1), c, 0x01);
+  return static_cast<T>(~others);
 }
 
 } // namespace

@@ -82,8 +82,12 @@ inline Floats4 high_floats(Lanes16 v) {
 
 /// Eight bytes from `from` widened to 16-bit lanes.
 inline Lanes16 widen_bytes(const std::uint8_t* from) {
-  using Bytes8 = std::uint8_t __attribute__((vector_size(8)));
-  return __builtin_convertvector(load_lanes<Bytes8>(from), Lanes16);
+  using Bytes16 = std::uint8_t __attribute__((vector_size(16)));
+  Bytes16 bytes{};
+  std::memcpy(&bytes, from, 8);
+  // Interleaved with zero bytes: one unpack.
+  return std::bit_cast<Lanes16>(__builtin_shufflevector(bytes, Bytes16{}, 0, 16, 1, 17, 2, 18, 3,
+                                                        19, 4, 20, 5, 21, 6, 22, 7, 23));
 }
 
 /// Transposes an 8 x 8 block: afterwards rows[i][j] holds what rows[j][i] held. Three rounds
