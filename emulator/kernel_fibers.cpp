@@ -93,6 +93,7 @@ void Kernel::Impl::preempt(Cpu& cpu, Process& low) {
     // kernel call (consume, block, yield, end); no simulated time passes before that, and
     // the operation that readied the high process completes first, as an instruction would.
     cpu.preempt_requested_ = true;
+    owner->refresh_fast_until();
     return;
   }
   low.state_ = ProcessState::ready;
@@ -112,6 +113,7 @@ void Kernel::Impl::ComputeDone::on_event(std::uint64_t tag) {
   p.compute_event_ = 0;
   p.compute_left_ = 0;
   kernel->current_ = &p;
+  kernel->refresh_fast_until();
   ++kernel->switches_;
   kernel->impl_->switch_to(p.context_->fiber, kernel->impl_->main);
 }
@@ -136,6 +138,7 @@ void Kernel::Impl::Dispatch::on_event(std::uint64_t tag) {
   Impl& impl = *kernel->impl_;
   impl.grant(cpu, *next);
   kernel->current_ = next;
+  kernel->refresh_fast_until();
   ++kernel->switches_;
   impl.switch_to(next->context_->fiber, impl.main);
 }

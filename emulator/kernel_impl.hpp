@@ -95,6 +95,9 @@ struct Kernel::Impl {
   boost::context::fiber& context_of(Process* p) { return p ? p->context_->fiber : main; }
   /// Gives the CPU of `p` (which stops running) to its next ready process or to the loop.
   Process* leave_cpu(Process& p);
+  /// Makes `next` the process holding `cpu`, with its timeslice.
+  void assign(Cpu& cpu, Process& next);
+  /// As assign(), for a CPU that was idle: its busy time and trace slice start.
   void grant(Cpu& cpu, Process& next);
   void release(Cpu& cpu);
   void request_dispatch(Cpu& cpu, Tick at);

@@ -78,6 +78,7 @@ void Kernel::consume_slowly(Tick duration) {
     p.compute_event_ = schedule_at(p.compute_end_, event_priority::normal, impl_->compute_done,
                                    detail::tag_of(&p));
     current_ = nullptr;
+    fast_until_ = kNoFastPath;
     ++switches_;
     impl_->switch_to(impl_->main, p.context_->fiber);
   }
@@ -106,10 +107,7 @@ bool Kernel::block_until(Tick deadline, WaitInfo why) {
   return p.timed_out_;
 }
 
-void Kernel::wake(Process& p) {
-  if (p.state_ != ProcessState::blocked) {
-    return;
-  }
+void Kernel::wake_slowly(Process& p) {
   if (p.timeout_event_ != 0) {
     cancel(std::exchange(p.timeout_event_, 0));
   }
@@ -167,6 +165,7 @@ void Kernel::kill(Process& p) {
   --live_;
   --cpu.live_count_;
   Process* saved = std::exchange(current_, &p);
+  refresh_fast_until();
   ++impl_->unwinding;
   {
     // Destroying a suspended fiber throws forced_unwind inside it: its destructors run.
@@ -174,6 +173,7 @@ void Kernel::kill(Process& p) {
   }
   --impl_->unwinding;
   current_ = saved;
+  refresh_fast_until();
   impl_->processes.remove_and_delete(&p);
 }
 

@@ -73,6 +73,7 @@ private:
   std::uint64_t dispatch_event_ = 0; // pending dispatch, 0 = none
   bool preempt_requested_ = false;   // a high process is ready; the running low one yields
   Tick next_tick_ = 0;               // first timeslice tick after the last grant
+  Tick slice_end_ = 0;               // slice end of a low process granted before next_tick_
   Tick busy_since_ = 0;
   Tick busy_total_ = 0;
   TrackId track_ = 0;
