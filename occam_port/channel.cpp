@@ -32,19 +32,25 @@ std::uint64_t channel_cycles(const Node& node, Instruction op, std::uint64_t cop
          cycles(op) + copied_words * static_cast<std::uint64_t>(costs[op].per_unit);
 }
 
-/// The process executing a channel operation and its node.
+/// The process executing a channel operation, its node and kernel.
 struct Here {
+  Kernel& kernel;
   Process& process;
   Node& node;
 };
 
+[[noreturn, gnu::cold, gnu::noinline]] void not_on_node() {
+  throw std::logic_error("channel used outside a simulated process on a node");
+}
+
 Here here() {
   Kernel* kernel = Kernel::active();
   Process* p = kernel != nullptr ? kernel->current() : nullptr;
-  if (p == nullptr || p->cpu().node() == nullptr) {
-    throw std::logic_error("channel used outside a simulated process on a node");
+  Node* node = p != nullptr ? p->cpu().node() : nullptr;
+  if (node == nullptr) [[unlikely]] {
+    not_on_node();
   }
-  return Here{*p, *p->cpu().node()};
+  return Here{*kernel, *p, *node};
 }
 
 } // namespace
@@ -96,6 +102,19 @@ std::string ChanBase::describe() const {
 void ChanBase::place_on_link(emulator::LinkPort& output_port, emulator::LinkPort& input_port) {
   output_port_ = &output_port;
   input_port_ = &input_port;
+  // On a link the CPU no longer copies the message: what was worked out no longer holds.
+  output_charge_ = Charge{};
+  input_charge_ = Charge{};
+}
+
+emulator::Tick ChanBase::charge(Charge& cached, const Node& node, Instruction op,
+                                std::size_t bytes) const {
+  if (cached.node == node.serial() && cached.bytes == bytes) [[likely]] {
+    return cached.time;
+  }
+  const std::uint64_t cycles = channel_cycles(node, op, external() ? 0 : words(bytes));
+  cached = Charge{node.serial(), bytes, node.cycles(cycles)};
+  return cached.time;
 }
 
 void ChanBase::copy_message(void* destination, const void* source, CopyFn copy) const {
@@ -103,9 +122,9 @@ void ChanBase::copy_message(void* destination, const void* source, CopyFn copy) 
 }
 
 void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
-  auto [me, node] = here();
-  node.compute_cycles(channel_cycles(node, Instruction::out, external() ? 0 : words(bytes)));
-  if (external()) {
+  auto [kernel, me, node] = here();
+  kernel.consume(charge(output_charge_, node, Instruction::out, bytes));
+  if (external()) [[unlikely]] {
     output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
     return;
   }
@@ -117,7 +136,7 @@ void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
     Process* reader = std::exchange(waiter_, nullptr);
     registration_ = nullptr;
     state_ = State::empty;
-    node.kernel().wake(*reader);
+    kernel.wake(*reader);
     return;
   }
   Registration registration(*this);
@@ -125,13 +144,13 @@ void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
   if (alt_ != nullptr) {
     alt_->guard_ready();
   }
-  node.kernel().block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
+  kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
 }
 
 void ChanBase::input(void* message, std::size_t bytes, CopyFn copy) {
-  auto [me, node] = here();
-  node.compute_cycles(channel_cycles(node, Instruction::in, external() ? 0 : words(bytes)));
-  if (external()) {
+  auto [kernel, me, node] = here();
+  kernel.consume(charge(input_charge_, node, Instruction::in, bytes));
+  if (external()) [[unlikely]] {
     input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
     return;
   }
@@ -143,12 +162,12 @@ void ChanBase::input(void* message, std::size_t bytes, CopyFn copy) {
     Process* writer = std::exchange(waiter_, nullptr);
     registration_ = nullptr;
     state_ = State::empty;
-    node.kernel().wake(*writer);
+    kernel.wake(*writer);
     return;
   }
   Registration registration(*this);
   registration.wait(State::reader_waiting, me, message, bytes);
-  node.kernel().block(emulator::WaitInfo{emulator::WaitKind::channel_input, this});
+  kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_input, this});
 }
 
 bool ChanBase::ready_for_input() const {

@@ -1,15 +1,18 @@
 #pragma once
 
+#include "marsokhod/emulator/cost_table.hpp"
 #include "marsokhod/emulator/kernel.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <type_traits>
 
 namespace marsokhod::emulator {
 class LinkPort;
-}
+class Node;
+} // namespace marsokhod::emulator
 
 namespace marsokhod::occam_port {
 
@@ -57,9 +60,16 @@ protected:
 private:
   enum class State : unsigned char { empty, reader_waiting, writer_waiting };
   class Registration;
+  /// What one side pays per message, worked out once per node and message length.
+  struct Charge {
+    std::uint64_t node = 0; ///< Node::serial(); 0: nothing worked out yet
+    std::size_t bytes = 0;
+    emulator::Tick time = 0;
+  };
+  emulator::Tick charge(Charge& cached, const emulator::Node& node, emulator::Instruction op,
+                        std::size_t bytes) const;
   void copy_message(void* destination, const void* source, CopyFn copy) const;
 
-  std::string name_;
   State state_ = State::empty;
   emulator::Process* waiter_ = nullptr;
   void* data_ = nullptr; // the waiting side's message
@@ -68,6 +78,9 @@ private:
   Registration* registration_ = nullptr; // the waiting side's, on its stack
   emulator::LinkPort* output_port_ = nullptr;
   emulator::LinkPort* input_port_ = nullptr;
+  Charge output_charge_;
+  Charge input_charge_;
+  std::string name_;
 };
 
 /// Bytes a value occupies on a channel (the length the transputer's in/out would copy).
