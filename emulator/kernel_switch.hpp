@@ -13,7 +13,7 @@ namespace marsokhod::emulator {
 
 inline void Kernel::Impl::switch_to(boost::context::fiber& target, boost::context::fiber& save) {
   save_slot = &save;
-  boost::context::fiber from = std::move(target).resume();
+  boost::context::fiber from = detail::resume(std::move(target));
   // Whoever switched to us said where its own context belongs.
   *save_slot = std::move(from);
   after_switch();
