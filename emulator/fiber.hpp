@@ -48,21 +48,22 @@ struct Context {
 
 using ForcedUnwind = boost::context::detail::forced_unwind;
 
-/// `std::move(target).resume()`: suspends the running context and resumes `target`; returns
-/// the context that later resumes this one.
-inline boost::context::fiber resume(boost::context::fiber&& target) {
+/// Suspends the running context and resumes `target`. When this context is resumed in turn,
+/// the context that resumed it is stored in `*slot`, read at that moment (the resumer sets
+/// it), which must then be empty.
+inline void switch_fiber(boost::context::fiber& target, boost::context::fiber* const& slot) {
 #if MARSOKHOD_RETURNING_SWITCH
-  // A fiber of the fcontext backend is its context pointer and nothing else.
+  // A fiber of the fcontext backend is its context pointer and nothing else; an empty one
+  // holds nullptr, so the slot can be written without a move assignment's checks.
   using boost::context::fiber;
   using boost::context::detail::fcontext_t;
   static_assert(std::is_standard_layout_v<fiber> && sizeof(fiber) == sizeof(fcontext_t));
   fcontext_t& to = *reinterpret_cast<fcontext_t*>(&target);
   const fcontext_t from = marsokhod_jump_fcontext(std::exchange(to, nullptr), nullptr).fctx;
-  fiber resumer;
-  *reinterpret_cast<fcontext_t*>(&resumer) = from;
-  return resumer;
+  *reinterpret_cast<fcontext_t*>(slot) = from;
 #else
-  return std::move(target).resume();
+  boost::context::fiber from = std::move(target).resume();
+  *slot = std::move(from);
 #endif
 }
 

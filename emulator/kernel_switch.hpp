@@ -13,9 +13,8 @@ namespace marsokhod::emulator {
 
 inline void Kernel::Impl::switch_to(boost::context::fiber& target, boost::context::fiber& save) {
   save_slot = &save;
-  boost::context::fiber from = detail::resume(std::move(target));
-  // Whoever switched to us said where its own context belongs.
-  *save_slot = std::move(from);
+  // Whoever switches back to us says where its own context belongs.
+  detail::switch_fiber(target, save_slot);
   after_switch();
 }
 
@@ -28,19 +27,21 @@ inline void Kernel::Impl::after_switch() {
 inline void Kernel::Impl::assign(Cpu& cpu, Process& next) {
   cpu.running_ = &next;
   next.state_ = ProcessState::running;
-  next.slice_end_ = kNever;
-  const CpuTiming& timing = cpu.timing_;
-  if (next.priority_ == Priority::low && timing.timeslice > 0) {
-    // The timeslice clock ticks at multiples of the period; a low-priority process is
-    // descheduled at a chunk boundary once it has seen `slices_before_deschedule` ticks
-    // since it got the CPU. The CPU keeps the next tick and the slice end that goes with it,
-    // so that a switch costs neither a division nor a multiplication.
-    if (owner->now_ >= cpu.next_tick_) {
-      cpu.next_tick_ = (owner->now_ / timing.timeslice + 1) * timing.timeslice;
-      cpu.slice_end_ = cpu.next_tick_ + (timing.slices_before_deschedule - 1) * timing.timeslice;
-    }
-    next.slice_end_ = cpu.slice_end_;
+  if (next.priority_ == Priority::high) {
+    next.slice_end_ = kNever;
+    return;
   }
+  // The timeslice clock ticks at multiples of the period; a low-priority process is
+  // descheduled at a chunk boundary once it has seen `slices_before_deschedule` ticks since
+  // it got the CPU. The CPU keeps the next tick and the slice end that goes with it, so that
+  // a switch costs neither a division nor a multiplication (without timeslicing both are
+  // kNever).
+  if (owner->now_ >= cpu.next_tick_) [[unlikely]] {
+    const CpuTiming& timing = cpu.timing_;
+    cpu.next_tick_ = (owner->now_ / timing.timeslice + 1) * timing.timeslice;
+    cpu.slice_end_ = cpu.next_tick_ + (timing.slices_before_deschedule - 1) * timing.timeslice;
+  }
+  next.slice_end_ = cpu.slice_end_;
 }
 
 inline void Kernel::Impl::grant(Cpu& cpu, Process& next) {

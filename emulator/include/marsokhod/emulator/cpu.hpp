@@ -110,11 +110,12 @@ inline Process* Cpu::pop() {
     if (p == nullptr) {
       continue;
     }
+    // p->next_ready_ keeps its stale value: it is read only while p is queued, and every
+    // push sets it.
     q.head = p->next_ready_;
     if (q.head == nullptr) {
       q.tail = nullptr;
     }
-    p->next_ready_ = nullptr;
     --ready_count_;
     return p;
   }
