@@ -31,13 +31,17 @@ inline Process& require_current(Process* current, const char* operation) {
 Process& Kernel::spawn(Cpu& cpu, std::string name, std::function<void()> body,
                        SpawnOptions options) {
   const std::uint64_t id = impl_->next_process_id++;
-  auto owned = std::unique_ptr<Process>(new Process(cpu, std::move(name), id, options.priority));
-  Process& p = *owned;
+  Process& p = *impl_->processes.create(cpu, std::move(name), id, options.priority);
   p.body_ = std::move(body);
   p.exit_hook_ = options.exit_hook;
-  impl_->start_fiber(p,
-                     options.stack_bytes != 0 ? options.stack_bytes : impl_->options.stack_bytes);
-  impl_->processes.add(owned.release());
+  try {
+    impl_->start_fiber(p,
+                       options.stack_bytes != 0 ? options.stack_bytes : impl_->options.stack_bytes);
+  } catch (...) {
+    impl_->processes.destroy(&p);
+    throw;
+  }
+  impl_->processes.add(&p);
   ++live_;
   ++cpu.live_count_;
   cpu.push_back(p);

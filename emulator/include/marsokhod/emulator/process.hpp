@@ -73,7 +73,8 @@ struct SpawnOptions {
 
 namespace detail {
 struct Context;
-}
+class ProcessRegistry;
+} // namespace detail
 
 /// A simulated process: a host fiber that runs on one CPU. Created by Kernel::spawn, owned by
 /// the kernel, destroyed after it finishes; a Process& is valid until its body returns.
@@ -96,7 +97,8 @@ public:
 private:
   friend class Kernel;
   friend class Cpu;
-  Process(Cpu& cpu, std::string name, std::uint64_t id, Priority priority);
+  friend class detail::ProcessRegistry;
+  Process(Cpu& cpu, std::string&& name, std::uint64_t id, Priority priority);
 
   // What every switch and wake-up touches comes first, to share cache lines.
   Cpu* cpu_;
