@@ -55,38 +55,9 @@ Here here() {
 
 } // namespace
 
-/// Withdraws a waiting side from the channel if its process is killed while it waits, so the
-/// channel never points into a stack that is gone; and forgets the channel if the channel
-/// goes first (a channel declared outside the processes, destroyed before the kernel).
-class ChanBase::Registration {
-public:
-  explicit Registration(ChanBase& channel) : channel_(&channel) {}
-  Registration(const Registration&) = delete;
-  Registration& operator=(const Registration&) = delete;
-  ~Registration() {
-    if (channel_ != nullptr && channel_->registration_ == this) {
-      channel_->state_ = State::empty;
-      channel_->waiter_ = nullptr;
-      channel_->data_ = nullptr;
-      channel_->registration_ = nullptr;
-    }
-  }
-  void wait(State state, Process& me, void* data, std::size_t bytes) {
-    channel_->state_ = state;
-    channel_->waiter_ = &me;
-    channel_->data_ = data;
-    channel_->data_bytes_ = bytes;
-    channel_->registration_ = this;
-  }
-  void channel_gone() { channel_ = nullptr; }
-
-private:
-  ChanBase* channel_;
-};
-
 ChanBase::~ChanBase() {
   if (registration_ != nullptr) {
-    registration_->channel_gone();
+    registration_->channel_ = nullptr;
   }
   if (alt_ != nullptr) {
     alt_->channel_gone(*this);
@@ -121,7 +92,18 @@ void ChanBase::copy_message(void* destination, const void* source, CopyFn copy) 
   copy(destination, source);
 }
 
-void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
+void ChanBase::wait_here(Registration& registration, State state, Process& me, void* data,
+                         std::size_t bytes) {
+  registration.channel_ = this;
+  state_ = state;
+  waiter_ = &me;
+  data_ = data;
+  data_bytes_ = bytes;
+  registration_ = &registration;
+}
+
+void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy,
+                      Registration& registration) {
   auto [kernel, me, node] = here();
   kernel.consume(charge(output_charge_, node, Instruction::out, bytes));
   if (external()) [[unlikely]] {
@@ -139,15 +121,14 @@ void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
     kernel.wake(*reader);
     return;
   }
-  Registration registration(*this);
-  registration.wait(State::writer_waiting, me, const_cast<void*>(message), bytes);
+  wait_here(registration, State::writer_waiting, me, const_cast<void*>(message), bytes);
   if (alt_ != nullptr) {
     alt_->guard_ready();
   }
   kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
 }
 
-void ChanBase::input(void* message, std::size_t bytes, CopyFn copy) {
+void ChanBase::input(void* message, std::size_t bytes, CopyFn copy, Registration& registration) {
   auto [kernel, me, node] = here();
   kernel.consume(charge(input_charge_, node, Instruction::in, bytes));
   if (external()) [[unlikely]] {
@@ -165,8 +146,7 @@ void ChanBase::input(void* message, std::size_t bytes, CopyFn copy) {
     kernel.wake(*writer);
     return;
   }
-  Registration registration(*this);
-  registration.wait(State::reader_waiting, me, message, bytes);
+  wait_here(registration, State::reader_waiting, me, message, bytes);
   kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_input, this});
 }
 

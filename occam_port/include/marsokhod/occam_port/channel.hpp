@@ -43,9 +43,15 @@ public:
   bool ready_for_input() const;
 
   /// `c ! message`: `bytes` is the message length the transputer would move.
-  void output(const void* message, std::size_t bytes, CopyFn copy);
+  void output(const void* message, std::size_t bytes, CopyFn copy) {
+    Registration registration;
+    output(message, bytes, copy, registration);
+  }
   /// `c ? message`.
-  void input(void* message, std::size_t bytes, CopyFn copy);
+  void input(void* message, std::size_t bytes, CopyFn copy) {
+    Registration registration;
+    input(message, bytes, copy, registration);
+  }
 
   // ALT support (enbc/disc): ready means an outputter is committed to this channel.
   bool enable(AltState& alt);
@@ -59,7 +65,40 @@ protected:
 
 private:
   enum class State : unsigned char { empty, reader_waiting, writer_waiting };
-  class Registration;
+
+  /// Withdraws a waiting side from the channel if its process is killed while it waits, so
+  /// the channel never points into a stack that is gone; and forgets the channel if the
+  /// channel goes first (one declared outside the processes, destroyed before the kernel).
+  class Registration {
+  public:
+    Registration() = default;
+    Registration(const Registration&) = delete;
+    Registration& operator=(const Registration&) = delete;
+    ~Registration() {
+      if (channel_ != nullptr && channel_->registration_ == this) {
+        channel_->withdraw();
+      }
+    }
+
+  private:
+    friend class ChanBase;
+    ChanBase* channel_ = nullptr; ///< set once the side waits
+  };
+
+  // The channel operations proper. The registration of a side that waits lives in the
+  // caller's frame, so that these can end with a jump into Kernel::block (a tail call)
+  // instead of a call: after the switch back the process returns straight into its own code,
+  // one return fewer, and each return after a switch is one the processor may mispredict.
+  void output(const void* message, std::size_t bytes, CopyFn copy, Registration& registration);
+  void input(void* message, std::size_t bytes, CopyFn copy, Registration& registration);
+  void wait_here(Registration& registration, State state, emulator::Process& me, void* data,
+                 std::size_t bytes);
+  void withdraw() {
+    state_ = State::empty;
+    waiter_ = nullptr;
+    data_ = nullptr;
+    registration_ = nullptr;
+  }
   /// What one side pays per message, worked out once per node and message length.
   struct Charge {
     std::uint64_t node = 0; ///< Node::serial(); 0: nothing worked out yet
