@@ -3,9 +3,9 @@
 //
 // Boost's version loads the resumed context's return address and jumps to it. The call into
 // the switch, though, pushed an entry on the processor's return-stack predictor that no return
-// pops, so after every switch each return of the resumed process (out of the switch, out of
-// Kernel::block, out of the channel operation) is predicted with the entry of the frame
-// below: all of them miss. Returning instead pops that entry and keeps the predictor in step;
+// pops, so after every switch each return of the resumed process on its way back to its own
+// code (out of the switch, out of Kernel::block, ...) is predicted with the entry of the
+// frame below: all of them miss. Returning instead pops that entry and keeps the predictor in step;
 // since processes suspend at the same few call sites, the predictions mostly hold.
 //
 // The frame is Boost's, byte for byte (MXCSR and x87 control word, r12-r15, rbx, rbp, return
