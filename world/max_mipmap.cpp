@@ -1,6 +1,7 @@
 #include "marsokhod/world/max_mipmap.hpp"
 
 #include "mipmap_walk.hpp"
+#include "slope_levels.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,46 +12,23 @@ namespace {
 using mipmap_walk::AxisRay;
 using mipmap_walk::walk;
 
-// On a bilinear cell dh/dx varies linearly across the cell, so its extremes lie on the two
-// edges along x, and likewise for y; the gradient is at most the root of the sum of the two
-// squared extremes. Over the whole (continuous) surface the largest cell bound is a Lipschitz
-// constant, since any straight ground segment is a chain of pieces inside cells.
-double bilinear_lipschitz(const HeightField& height) {
-  // Single precision keeps the loop vectorised; the bound is then widened by far more than its
-  // rounding error.
-  constexpr double kRoundingAllowance = 1.0 + 1e-5;
-  const nav::Image<float>& nodes = height.nodes();
-  float steepest_squared = 0.0F;
-  for (int j = 0; j + 1 < height.ny(); ++j) {
-    const float* near = nodes.row(j);
-    const float* far = nodes.row(j + 1);
-    for (int i = 0; i + 1 < height.nx(); ++i) {
-      const float along_x =
-          std::max(std::abs(near[i + 1] - near[i]), std::abs(far[i + 1] - far[i]));
-      const float along_y =
-          std::max(std::abs(far[i] - near[i]), std::abs(far[i + 1] - near[i + 1]));
-      steepest_squared = std::max(steepest_squared, along_x * along_x + along_y * along_y);
-    }
-  }
-  return std::sqrt(static_cast<double>(steepest_squared)) * kRoundingAllowance / height.cell_m();
-}
+constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 } // namespace
 
 MaxMipmap::MaxMipmap(const HeightField& height) : height_(&height) {
   if (height.nx() < 2 || height.ny() < 2)
     return;
-  Level cells{height.nx() - 1, height.ny() - 1, {}};
+  Level cells{height.nx() - 1, height.ny() - 1, {}, {}};
   cells.max.resize(static_cast<std::size_t>(cells.width) * cells.height);
   for (int j = 0; j < cells.height; ++j)
     for (int i = 0; i < cells.width; ++i)
       cells.max[static_cast<std::size_t>(j) * cells.width + i] = std::max(
           {height.at(i, j), height.at(i + 1, j), height.at(i, j + 1), height.at(i + 1, j + 1)});
   levels_.push_back(std::move(cells));
-  steepest_gradient_ = bilinear_lipschitz(height);
   while (levels_.back().width > 1 || levels_.back().height > 1) {
     const Level& below = levels_.back();
-    Level above{(below.width + 1) / 2, (below.height + 1) / 2, {}};
+    Level above{(below.width + 1) / 2, (below.height + 1) / 2, {}, {}};
     above.max.assign(static_cast<std::size_t>(above.width) * above.height,
                      -std::numeric_limits<float>::infinity());
     for (int j = 0; j < below.height; ++j)
@@ -60,8 +38,14 @@ MaxMipmap::MaxMipmap(const HeightField& height) : height_(&height) {
       }
     levels_.push_back(std::move(above));
   }
+  SlopeLevels slopes = slope_levels(height, kSlopeLevel);
+  steepest_gradient_ = slopes.steepest;
+  if (levels() == kSlopeLevel + static_cast<int>(slopes.levels.size()))
+    for (std::size_t k = 0; k < slopes.levels.size(); ++k)
+      levels_[kSlopeLevel + k].slope = std::move(slopes.levels[k]);
   for (const Level& level : levels_)
-    views_.push_back(LevelView{level.max.data(), level.width, level.height});
+    views_.push_back(LevelView{level.max.data(), level.slope.empty() ? nullptr : level.slope.data(),
+                               level.width, level.height});
 }
 
 std::optional<double> MaxMipmap::first_hit(const Eigen::Vector3d& origin,
@@ -77,9 +61,18 @@ std::optional<double> MaxMipmap::first_hit_beyond(const Eigen::Vector3d& origin,
   return cast(origin, direction, std::max(0.0, t_start), t_max, 0);
 }
 
+std::optional<double> MaxMipmap::first_hit_beyond_gentle(const Eigen::Vector3d& origin,
+                                                         const Eigen::Vector3d& direction,
+                                                         double t_start, double gentle,
+                                                         int first_level) const {
+  const int level = first_level < 0 ? levels() - 1 : std::min(first_level, levels() - 1);
+  return cast(origin, direction, 0.0, kNoLimit, level, t_start, gentle);
+}
+
 std::optional<double> MaxMipmap::cast(const Eigen::Vector3d& origin,
                                       const Eigen::Vector3d& direction, double t_start,
-                                      double t_max, int level) const {
+                                      double t_max, int level, double t_gentle,
+                                      double gentle) const {
   if (levels_.empty())
     return std::nullopt;
   const HeightField& field = *height_;
@@ -99,11 +92,26 @@ std::optional<double> MaxMipmap::cast(const Eigen::Vector3d& origin,
   if (t > t_end)
     return std::nullopt;
   const bool parallel = x.inv == 0.0 || y.inv == 0.0;
-  if (direction.z() < 0.0)
-    return parallel ? walk<true, true>(*this, x, y, origin.z(), direction.z(), t, t_end, level)
-                    : walk<true, false>(*this, x, y, origin.z(), direction.z(), t, t_end, level);
-  return parallel ? walk<false, true>(*this, x, y, origin.z(), direction.z(), t, t_end, level)
-                  : walk<false, false>(*this, x, y, origin.z(), direction.z(), t, t_end, level);
+  const double z0 = origin.z();
+  const double dz = direction.z();
+  if (t_gentle > t && dz < 0.0) {
+    // Up to t_gentle gentle blocks are skipped unseen; from there the walk starts afresh in the
+    // finest level, as first_hit_beyond would.
+    const double t_split = std::min(t_gentle, t_end);
+    if (auto hit = parallel
+                       ? walk<true, true, true>(*this, x, y, z0, dz, t, t_split, level, gentle)
+                       : walk<true, false, true>(*this, x, y, z0, dz, t, t_split, level, gentle))
+      return hit;
+    if (t_split >= t_end)
+      return std::nullopt;
+    t = t_split;
+    level = 0;
+  }
+  if (dz < 0.0)
+    return parallel ? walk<true, true>(*this, x, y, z0, dz, t, t_end, level)
+                    : walk<true, false>(*this, x, y, z0, dz, t, t_end, level);
+  return parallel ? walk<false, true>(*this, x, y, z0, dz, t, t_end, level)
+                  : walk<false, false>(*this, x, y, z0, dz, t, t_end, level);
 }
 
 int MaxMipmap::start_level(const Eigen::Vector3d& origin) const {

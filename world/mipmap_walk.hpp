@@ -67,9 +67,12 @@ struct AxisRay {
 // The walk down the quadtree for one ray, specialised on whether the ray descends, since that
 // decides where over a block the ray is lowest (at its exit or at its entry), and on whether it
 // runs parallel to a grid axis, which only the choice of a child block has to care about.
-template <bool Descending, bool Parallel>
+//
+// With Gentle the caller knows the ray meets nothing before t_end over blocks whose slope bound
+// is at most `gentle`, and the walk skips those without comparing heights.
+template <bool Descending, bool Parallel, bool Gentle = false>
 std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const AxisRay& y, double z0,
-                           double dz, double t, double t_end, int level) {
+                           double dz, double t, double t_end, int level, double gentle = 0.0) {
   // The walk holds the block (bx, by) of the current level that contains the ray at t, and the
   // t where the ray leaves it across each axis. Skipping a block only steps these integers and
   // recomputes the exit of the axis it crossed, and a child is chosen by comparing t with the
@@ -86,7 +89,8 @@ std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const Axis
   for (;;) {
     double t_out = std::min(tx, ty);
     const double low = z0 + dz * (Descending ? std::min(t_out, t_end) : t);
-    if (low <= here->max[static_cast<std::size_t>(by) * here->width + bx]) {
+    const std::size_t index = static_cast<std::size_t>(by) * here->width + bx;
+    if (low <= here->max[index] && !(Gentle && here->slope && here->slope[index] <= gentle)) {
       if (level > 0) {
         --level;
         --here;
@@ -126,7 +130,8 @@ std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const Axis
         const double up_out = std::min(up_tx, up_ty);
         const double up_low = z0 + dz * (Descending ? std::min(up_out, t_end) : t);
         const MaxMipmap::LevelView* up = here + 1;
-        if (up_low > up->max[static_cast<std::size_t>(up_y) * up->width + up_x]) {
+        const std::size_t up_index = static_cast<std::size_t>(up_y) * up->width + up_x;
+        if (up_low > up->max[up_index] || (Gentle && up->slope && up->slope[up_index] <= gentle)) {
           ++level;
           here = up;
           bx = up_x;
