@@ -36,13 +36,11 @@ struct ProvenStart {
   bool short_gap = false;  // the two rays' ground points stay within a cell of each other
 };
 
-ProvenStart proven_start(const Eigen::Vector3d& upper, const Eigen::Vector3d& lower, double t_lower,
+// upper_ground and lower_ground: the lengths of the rays' ground components.
+ProvenStart proven_start(const Eigen::Vector3d& upper, double upper_ground,
+                         const Eigen::Vector3d& lower, double lower_ground, double t_lower,
                          double lipschitz, double cell_m) {
-  if (!std::isfinite(t_lower))
-    return {};
-  const double upper_ground = upper.head<2>().norm();
-  const double lower_ground = lower.head<2>().norm();
-  if (lower_ground <= 0.0 || upper_ground <= 0.0)
+  if (!std::isfinite(t_lower) || lower_ground <= 0.0 || upper_ground <= 0.0)
     return {};
   const double k = upper_ground / lower_ground;
   const double rise = upper.z() - k * lower.z();
@@ -56,37 +54,46 @@ ProvenStart proven_start(const Eigen::Vector3d& upper, const Eigen::Vector3d& lo
 
 } // namespace
 
-std::vector<double> cast_pixel_rays(const CameraView& camera, const MaxMipmap& mipmap,
-                                    int first_level) {
-  const int width = camera.width();
-  const int height = camera.height();
-  std::vector<double> hits(static_cast<std::size_t>(width) * height, kNoHit);
-  std::vector<Eigen::Vector3d> below(static_cast<std::size_t>(width));
-  const double lipschitz = mipmap.steepest_gradient();
-  const double cell_m = mipmap.height_field().cell_m();
-  const Eigen::Vector3d& origin = camera.centre();
-  // Bottom row first: each ray then has the one below it, which usually ends just short of it.
-  for (int v = height - 1; v >= 0; --v) {
-    double* row = hits.data() + static_cast<std::size_t>(v) * width;
-    const double* row_below = v + 1 < height ? row + width : nullptr;
-    for (int u = 0; u < width; ++u) {
-      const Eigen::Vector3d direction = camera.ray(u, v);
-      const ProvenStart start =
-          row_below ? proven_start(direction, below[u], row_below[u], lipschitz, cell_m)
-                    : ProvenStart{};
-      std::optional<double> hit;
-      if (start.t_start > 0.0 && start.everywhere)
-        hit = mipmap.first_hit_beyond(origin, direction, start.t_start);
-      else if (start.t_start > 0.0 && start.short_gap)
-        hit = mipmap.first_hit_beyond_gentle(origin, direction, start.t_start, start.gentle,
-                                             first_level);
-      else
-        hit = mipmap.first_hit(origin, direction, kNoHit, first_level);
-      row[u] = hit ? *hit : kNoHit;
-      below[u] = direction;
-    }
+PixelRayCaster::PixelRayCaster(const CameraView& camera, const MaxMipmap& mipmap, int first_level)
+    : camera_(&camera), mipmap_(&mipmap), first_level_(first_level), v_(camera.height()) {
+  const auto width = static_cast<std::size_t>(camera.width());
+  directions_.resize(width);
+  directions_below_.resize(width);
+  hits_.assign(width, kNoHit);
+  hits_below_.assign(width, kNoHit);
+  ground_.resize(width);
+  ground_below_.resize(width);
+}
+
+int PixelRayCaster::next_row() {
+  const bool has_below = v_ < camera_->height();
+  --v_;
+  directions_.swap(directions_below_);
+  hits_.swap(hits_below_);
+  ground_.swap(ground_below_);
+  const double lipschitz = mipmap_->steepest_gradient();
+  const double cell_m = mipmap_->height_field().cell_m();
+  const Eigen::Vector3d& origin = camera_->centre();
+  for (int u = 0; u < camera_->width(); ++u) {
+    const Eigen::Vector3d direction = camera_->ray(u, v_);
+    const double ground = direction.head<2>().norm();
+    const ProvenStart start =
+        has_below ? proven_start(direction, ground, directions_below_[u], ground_below_[u],
+                                 hits_below_[u], lipschitz, cell_m)
+                  : ProvenStart{};
+    std::optional<double> hit;
+    if (start.t_start > 0.0 && start.everywhere)
+      hit = mipmap_->first_hit_beyond(origin, direction, start.t_start);
+    else if (start.t_start > 0.0 && start.short_gap)
+      hit = mipmap_->first_hit_beyond_gentle(origin, direction, start.t_start, start.gentle,
+                                             first_level_);
+    else
+      hit = mipmap_->first_hit(origin, direction, kNoHit, first_level_);
+    directions_[u] = direction;
+    hits_[u] = hit ? *hit : kNoHit;
+    ground_[u] = ground;
   }
-  return hits;
+  return v_;
 }
 
 } // namespace marsokhod::world

@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 namespace marsokhod::world {
 namespace {
@@ -132,21 +133,31 @@ nav::Image<std::uint8_t> Renderer::render_eye(const nav::StereoRig& rig, nav::Ey
   GaussianNoise noise(
       substream_seed(options.noise_seed, eye == nav::Eye::left ? kLeftNoise : kRightNoise));
 
-  const std::vector<double> hits =
-      cast_pixel_rays(camera, mipmap_, mipmap_.start_level(camera.centre()));
-  nav::Image<std::uint8_t> image(rig.width(), rig.height());
-  for (int v = 0; v < image.height(); ++v) {
-    std::uint8_t* row = image.row(v);
-    const double* row_hits = hits.data() + static_cast<std::size_t>(v) * image.width();
-    for (int u = 0; u < image.width(); ++u) {
-      const Eigen::Vector3d direction = camera.ray(u, v);
-      const std::optional<double> hit =
-          std::isfinite(row_hits[u]) ? std::optional<double>(row_hits[u]) : std::nullopt;
+  // Rows are cast bottom-up and each is shaded and recorded while the terrain its rays met is
+  // still in the cache; the noise is then added in row-major order, as the stream runs.
+  PixelRayCaster caster(camera, mipmap_, mipmap_.start_level(camera.centre()));
+  const int width = rig.width();
+  std::vector<double> values(static_cast<std::size_t>(width) * rig.height());
+  for (int r = 0; r < rig.height(); ++r) {
+    const int v = caster.next_row();
+    double* row_values = values.data() + static_cast<std::size_t>(v) * width;
+    for (int u = 0; u < width; ++u) {
+      const Eigen::Vector3d& direction = caster.directions()[u];
+      const double t = caster.hits()[u];
+      const std::optional<double> hit = std::isfinite(t) ? std::optional<double>(t) : std::nullopt;
       if (hit && depth)
         (*depth)(u, v) = static_cast<float>(*hit);
       if (hit && recorder)
         recorder->record(u, v, camera.centre() + *hit * direction);
-      double value = n == 1 ? shader.shade(direction, hit) : supersample(shader, camera, u, v, n);
+      row_values[u] = n == 1 ? shader.shade(direction, hit) : supersample(shader, camera, u, v, n);
+    }
+  }
+  nav::Image<std::uint8_t> image(rig.width(), rig.height());
+  for (int v = 0; v < image.height(); ++v) {
+    std::uint8_t* row = image.row(v);
+    const double* row_values = values.data() + static_cast<std::size_t>(v) * width;
+    for (int u = 0; u < image.width(); ++u) {
+      double value = row_values[u];
       if (options.noise_sigma > 0.0)
         value += options.noise_sigma * noise.next();
       row[u] = to_grey(value);
