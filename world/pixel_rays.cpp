@@ -29,12 +29,7 @@ constexpr double kStartMargin = 1e-6;
 // the segment is no longer than a cell. Both ground points lie within the triangle of the
 // origin's ground point and the two rays' ground tracks, inside the (convex) grid wherever the
 // upper ray could meet the surface.
-struct ProvenStart {
-  double t_start = 0.0;
-  double gentle = 0.0;
-  bool everywhere = false; // gentle is at least the whole surface's Lipschitz constant
-  bool short_gap = false;  // the two rays' ground points stay within a cell of each other
-};
+using ProvenStart = PixelRayCaster::ProvenStart;
 
 // upper_ground and lower_ground: the lengths of the rays' ground components.
 ProvenStart proven_start(const Eigen::Vector3d& upper, double upper_ground,
@@ -63,6 +58,7 @@ PixelRayCaster::PixelRayCaster(const CameraView& camera, const MaxMipmap& mipmap
   hits_below_.assign(width, kNoHit);
   ground_.resize(width);
   ground_below_.resize(width);
+  starts_.resize(width);
 }
 
 int PixelRayCaster::next_row() {
@@ -74,13 +70,18 @@ int PixelRayCaster::next_row() {
   const double lipschitz = mipmap_->steepest_gradient();
   const double cell_m = mipmap_->height_field().cell_m();
   const Eigen::Vector3d& origin = camera_->centre();
+  // The directions and proven starts first, for the whole row: they do not depend on one
+  // another, so their square roots and divisions overlap instead of waiting between walks.
   for (int u = 0; u < camera_->width(); ++u) {
-    const Eigen::Vector3d direction = camera_->ray(u, v_);
-    const double ground = direction.head<2>().norm();
-    const ProvenStart start =
-        has_below ? proven_start(direction, ground, directions_below_[u], ground_below_[u],
-                                 hits_below_[u], lipschitz, cell_m)
-                  : ProvenStart{};
+    directions_[u] = camera_->ray(u, v_);
+    ground_[u] = directions_[u].head<2>().norm();
+    starts_[u] = has_below ? proven_start(directions_[u], ground_[u], directions_below_[u],
+                                          ground_below_[u], hits_below_[u], lipschitz, cell_m)
+                           : ProvenStart{};
+  }
+  for (int u = 0; u < camera_->width(); ++u) {
+    const Eigen::Vector3d& direction = directions_[u];
+    const ProvenStart& start = starts_[u];
     std::optional<double> hit;
     if (start.t_start > 0.0 && start.everywhere)
       hit = mipmap_->first_hit_beyond(origin, direction, start.t_start);
@@ -89,9 +90,7 @@ int PixelRayCaster::next_row() {
                                              first_level_);
     else
       hit = mipmap_->first_hit(origin, direction, kNoHit, first_level_);
-    directions_[u] = direction;
     hits_[u] = hit ? *hit : kNoHit;
-    ground_[u] = ground;
   }
   return v_;
 }

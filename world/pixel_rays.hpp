@@ -25,6 +25,14 @@ public:
   const std::vector<Eigen::Vector3d>& directions() const { return directions_; }
   const std::vector<double>& hits() const { return hits_; }
 
+  /// What the ray of the pixel below proves about a ray (pixel_rays.cpp).
+  struct ProvenStart {
+    double t_start = 0.0; ///< 0 when nothing is proven
+    double gentle = 0.0;
+    bool everywhere = false; ///< gentle is at least the whole surface's Lipschitz constant
+    bool short_gap = false;  ///< the two rays' ground points stay within a cell of each other
+  };
+
 private:
   const CameraView* camera_;
   const MaxMipmap* mipmap_;
@@ -33,6 +41,7 @@ private:
   std::vector<Eigen::Vector3d> directions_, directions_below_;
   std::vector<double> hits_, hits_below_;
   std::vector<double> ground_, ground_below_; // lengths of the rays' ground components
+  std::vector<ProvenStart> starts_;
 };
 
 } // namespace marsokhod::world
