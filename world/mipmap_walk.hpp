@@ -142,10 +142,10 @@ std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const Axis
           continue;
         }
       }
-      if (cross_x)
-        tx = x.exit(bx, level);
-      if (cross_y)
-        ty = y.exit(by, level);
+      // tx and ty are always the exits of (bx, by), so both are recomputed rather than the
+      // crossed one only: which axis a ray crosses next is too irregular to branch on.
+      tx = x.exit(bx, level);
+      ty = y.exit(by, level);
       break;
     }
   }
