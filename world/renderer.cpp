@@ -142,14 +142,21 @@ nav::Image<std::uint8_t> Renderer::render_eye(const nav::StereoRig& rig, nav::Ey
     const int v = caster.next_row();
     double* row_values = values.data() + static_cast<std::size_t>(v) * width;
     for (int u = 0; u < width; ++u) {
-      const Eigen::Vector3d& direction = caster.directions()[u];
+      const double t = caster.hits()[u];
+      if (!std::isfinite(t))
+        continue;
+      if (depth)
+        (*depth)(u, v) = static_cast<float>(t);
+      if (recorder)
+        recorder->record(u, v, camera.centre() + t * caster.directions()[u]);
+    }
+    // Shading in a loop of its own: with no occlusion ray between two pixels, the square roots
+    // and divisions of one overlap those of the next.
+    for (int u = 0; u < width; ++u) {
       const double t = caster.hits()[u];
       const std::optional<double> hit = std::isfinite(t) ? std::optional<double>(t) : std::nullopt;
-      if (hit && depth)
-        (*depth)(u, v) = static_cast<float>(*hit);
-      if (hit && recorder)
-        recorder->record(u, v, camera.centre() + *hit * direction);
-      row_values[u] = n == 1 ? shader.shade(direction, hit) : supersample(shader, camera, u, v, n);
+      row_values[u] = n == 1 ? shader.shade(caster.directions()[u], hit)
+                             : supersample(shader, camera, u, v, n);
     }
   }
   nav::Image<std::uint8_t> image(rig.width(), rig.height());
