@@ -13,6 +13,8 @@ using mipmap_walk::AxisRay;
 using mipmap_walk::walk;
 
 constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+// A ray end this far below the site's highest point is below it whatever the rounding, metres.
+constexpr double kClipMargin = 1e-6;
 
 } // namespace
 
@@ -43,6 +45,8 @@ MaxMipmap::MaxMipmap(const HeightField& height) : height_(&height) {
   if (levels() == kSlopeLevel + static_cast<int>(slopes.levels.size()))
     for (std::size_t k = 0; k < slopes.levels.size(); ++k)
       levels_[kSlopeLevel + k].slope = std::move(slopes.levels[k]);
+  highest_ = levels_.back().max[0];
+  per_m_ = 1.0 / height.cell_m();
   for (const Level& level : levels_)
     views_.push_back(LevelView{level.max.data(), level.slope.empty() ? nullptr : level.slope.data(),
                                level.width, level.height});
@@ -76,24 +80,24 @@ std::optional<double> MaxMipmap::cast(const Eigen::Vector3d& origin,
   if (levels_.empty())
     return std::nullopt;
   const HeightField& field = *height_;
-  const double per_m = 1.0 / field.cell_m();
-  const AxisRay x(origin.x(), direction.x(), field.origin().x(), per_m);
-  const AxisRay y(origin.y(), direction.y(), field.origin().y(), per_m);
+  const AxisRay x(origin.x(), direction.x(), field.origin().x(), per_m_);
+  const AxisRay y(origin.y(), direction.y(), field.origin().y(), per_m_);
   double t = t_start;
   double t_end = t_max;
   if (!x.clip(blocks_x(0), t, t_end) || !y.clip(blocks_y(0), t, t_end))
     return std::nullopt;
-  // Above the highest point of the site the ray meets nothing: clip that part away.
-  const double highest = max_height(levels() - 1, 0, 0);
-  if (direction.z() > 0.0)
-    t_end = std::min(t_end, (highest - origin.z()) / direction.z());
-  else if (direction.z() < 0.0)
-    t = std::max(t, (highest - origin.z()) / direction.z());
+  // Above the highest point of the site the ray meets nothing: clip that part away. Where the
+  // ray is well below it at that end already the clip would change nothing, and the division
+  // is saved.
+  const double z0 = origin.z();
+  const double dz = direction.z();
+  if (dz > 0.0 && z0 + dz * t_end > highest_ - kClipMargin)
+    t_end = std::min(t_end, (highest_ - z0) / dz);
+  else if (dz < 0.0 && z0 + dz * t > highest_ - kClipMargin)
+    t = std::max(t, (highest_ - z0) / dz);
   if (t > t_end)
     return std::nullopt;
   const bool parallel = x.inv == 0.0 || y.inv == 0.0;
-  const double z0 = origin.z();
-  const double dz = direction.z();
   if (t_gentle > t && dz < 0.0) {
     // Up to t_gentle gentle blocks are skipped unseen; from there the walk starts afresh in the
     // finest level, as first_hit_beyond would.

@@ -103,6 +103,8 @@ private:
   std::vector<Level> levels_;
   std::vector<LevelView> views_; // into levels_, which never changes after construction
   double steepest_gradient_ = 0.0;
+  double highest_ = 0.0; // of the whole site
+  double per_m_ = 1.0;   // cells per metre
 };
 
 } // namespace marsokhod::world
