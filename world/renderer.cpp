@@ -33,7 +33,8 @@ void check_options(const RenderOptions& options) {
 }
 
 std::uint8_t to_grey(double value) {
-  return static_cast<std::uint8_t>(std::clamp(std::floor(value + 0.5), 0.0, 255.0));
+  // Clamped first, the conversion's truncation is floor(value + 0.5).
+  return static_cast<std::uint8_t>(std::clamp(value + 0.5, 0.0, 255.0));
 }
 
 // Grey level, before noise, of what one ray sees.
