@@ -139,6 +139,9 @@ nav::Image<std::uint8_t> Renderer::render_eye(const nav::StereoRig& rig, nav::Ey
   PixelRayCaster caster(camera, mipmap_, mipmap_.start_level(camera.centre()));
   const int width = rig.width();
   std::vector<double> values(static_cast<std::size_t>(width) * rig.height());
+  const double sky_grey = surface.lighting().sky_grey;
+  std::vector<Eigen::Vector3d> points(static_cast<std::size_t>(width));
+  std::vector<double> weights(static_cast<std::size_t>(width));
   for (int r = 0; r < rig.height(); ++r) {
     const int v = caster.next_row();
     double* row_values = values.data() + static_cast<std::size_t>(v) * width;
@@ -151,14 +154,24 @@ nav::Image<std::uint8_t> Renderer::render_eye(const nav::StereoRig& rig, nav::Ey
       if (recorder)
         recorder->record(u, v, camera.centre() + t * caster.directions()[u]);
     }
-    // Shading in a loop of its own: with no occlusion ray between two pixels, the square roots
-    // and divisions of one overlap those of the next.
+    if (n > 1) {
+      for (int u = 0; u < width; ++u)
+        row_values[u] = supersample(shader, camera, u, v, n);
+      continue;
+    }
+    // Shading in loops of their own, the texture weights first: with no occlusion ray or
+    // texture lookup between two pixels, the square roots and divisions of one overlap those of
+    // the next.
     for (int u = 0; u < width; ++u) {
       const double t = caster.hits()[u];
-      const std::optional<double> hit = std::isfinite(t) ? std::optional<double>(t) : std::nullopt;
-      row_values[u] = n == 1 ? shader.shade(caster.directions()[u], hit)
-                             : supersample(shader, camera, u, v, n);
+      if (!std::isfinite(t))
+        continue;
+      points[u] = camera.centre() + t * caster.directions()[u];
+      weights[u] = sampler.texture_weight(points[u], caster.directions()[u], t);
     }
+    for (int u = 0; u < width; ++u)
+      row_values[u] = std::isfinite(caster.hits()[u]) ? sampler.grey_with(points[u], weights[u])
+                                                      : sky_grey;
   }
   nav::Image<std::uint8_t> image(rig.width(), rig.height());
   for (int v = 0; v < image.height(); ++v) {
