@@ -118,6 +118,19 @@ std::optional<double> MaxMipmap::cast(const Eigen::Vector3d& origin,
                   : walk<false, false>(*this, x, y, z0, dz, t, t_end, level);
 }
 
+double MaxMipmap::grid_exit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) const {
+  if (levels_.empty())
+    return 0.0;
+  const HeightField& field = *height_;
+  const AxisRay x(origin.x(), direction.x(), field.origin().x(), per_m_);
+  const AxisRay y(origin.y(), direction.y(), field.origin().y(), per_m_);
+  double t = 0.0;
+  double t_end = kNoLimit;
+  if (!x.clip(blocks_x(0), t, t_end) || !y.clip(blocks_y(0), t, t_end))
+    return 0.0;
+  return t_end;
+}
+
 int MaxMipmap::start_level(const Eigen::Vector3d& origin) const {
   const HeightField& h = *height_;
   const double gx = (origin.x() - h.origin().x()) / h.cell_m();

@@ -12,10 +12,11 @@ constexpr double kNoHit = std::numeric_limits<double>::infinity();
 // step over a surface that touches the bound.
 constexpr double kStartMargin = 1e-6;
 
-// What the ray `lower` (same origin, unit directions) first meeting the surface at t_lower
-// proves about the ray `upper`: it meets nothing before t_start wherever the surface is no
-// steeper than `gentle`: everywhere when the whole surface is, else over blocks with a slope
-// bound that low when the gap between the rays is short. t_start = 0 when nothing is proven.
+// What the ray `lower` (same origin, unit directions), which meets nothing before t_lower (its
+// first hit, or where it leaves the grid if it has none), proves about the ray `upper`: it meets
+// nothing before t_start wherever the surface is no steeper than `gentle`: everywhere when the
+// whole surface is, else over blocks with a slope bound that low when the gap between the rays is
+// short. t_start = 0 when nothing is proven.
 //
 // Compare the two rays at equal ground distance from the origin: p = upper(t) and
 // q = lower(k t) with k = |upper_xy| / |lower_xy|. Their ground points are
@@ -56,6 +57,8 @@ PixelRayCaster::PixelRayCaster(const CameraView& camera, const MaxMipmap& mipmap
   directions_below_.resize(width);
   hits_.assign(width, kNoHit);
   hits_below_.assign(width, kNoHit);
+  clear_.resize(width);
+  clear_below_.resize(width);
   ground_.resize(width);
   ground_below_.resize(width);
   starts_.resize(width);
@@ -66,6 +69,7 @@ int PixelRayCaster::next_row() {
   --v_;
   directions_.swap(directions_below_);
   hits_.swap(hits_below_);
+  clear_.swap(clear_below_);
   ground_.swap(ground_below_);
   const double lipschitz = mipmap_->steepest_gradient();
   const double cell_m = mipmap_->height_field().cell_m();
@@ -76,7 +80,7 @@ int PixelRayCaster::next_row() {
     directions_[u] = camera_->ray(u, v_);
     ground_[u] = directions_[u].head<2>().norm();
     starts_[u] = has_below ? proven_start(directions_[u], ground_[u], directions_below_[u],
-                                          ground_below_[u], hits_below_[u], lipschitz, cell_m)
+                                          ground_below_[u], clear_below_[u], lipschitz, cell_m)
                            : ProvenStart{};
   }
   for (int u = 0; u < camera_->width(); ++u) {
@@ -91,6 +95,7 @@ int PixelRayCaster::next_row() {
     else
       hit = mipmap_->first_hit(origin, direction, kNoHit, first_level_);
     hits_[u] = hit ? *hit : kNoHit;
+    clear_[u] = hit ? *hit : mipmap_->grid_exit(origin, directions_[u]);
   }
   return v_;
 }

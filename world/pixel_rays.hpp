@@ -40,6 +40,8 @@ private:
   int v_;
   std::vector<Eigen::Vector3d> directions_, directions_below_;
   std::vector<double> hits_, hits_below_;
+  std::vector<double> clear_,
+      clear_below_; // the hit, or where a ray that met nothing left the grid
   std::vector<double> ground_, ground_below_; // lengths of the rays' ground components
   std::vector<ProvenStart> starts_;
 };

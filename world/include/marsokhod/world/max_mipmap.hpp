@@ -70,6 +70,9 @@ public:
   std::optional<double> first_hit_beyond_gentle(const Eigen::Vector3d& origin,
                                                 const Eigen::Vector3d& direction, double t_start,
                                                 double gentle, int first_level = -1) const;
+  /// Where the ray leaves the grid (t along it; 0 if it never is over the grid). A ray that met
+  /// nothing before then meets nothing at all: first_hit's "nothing" means this far clear.
+  double grid_exit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) const;
   /// Lipschitz constant of the bilinear surface (metres of height per metre of ground): no two
   /// surface points differ in height by more than this times their ground distance.
   double steepest_gradient() const { return steepest_gradient_; }
