@@ -18,28 +18,39 @@ constexpr double kClipMargin = 1e-6;
 
 } // namespace
 
+// The maximum of each 2 x 2 block of the level below (fewer at an odd border).
+MaxMipmap::Level MaxMipmap::coarser(const Level& below) {
+  Level above{(below.width + 1) / 2, (below.height + 1) / 2, {}, {}};
+  above.max.resize(static_cast<std::size_t>(above.width) * above.height);
+  const int pairs = below.width / 2; // blocks with two children along x
+  for (int j = 0; j < above.height; ++j) {
+    const float* near = below.max.data() + static_cast<std::size_t>(2 * j) * below.width;
+    const float* far = 2 * j + 1 < below.height ? near + below.width : near;
+    float* out = above.max.data() + static_cast<std::size_t>(j) * above.width;
+    for (int i = 0; i < pairs; ++i)
+      out[i] =
+          std::max(std::max(near[2 * i], near[2 * i + 1]), std::max(far[2 * i], far[2 * i + 1]));
+    if (pairs < above.width)
+      out[pairs] = std::max(near[2 * pairs], far[2 * pairs]);
+  }
+  return above;
+}
+
 MaxMipmap::MaxMipmap(const HeightField& height) : height_(&height) {
   if (height.nx() < 2 || height.ny() < 2)
     return;
   Level cells{height.nx() - 1, height.ny() - 1, {}, {}};
   cells.max.resize(static_cast<std::size_t>(cells.width) * cells.height);
-  for (int j = 0; j < cells.height; ++j)
+  for (int j = 0; j < cells.height; ++j) {
+    const float* near = height.nodes().row(j);
+    const float* far = height.nodes().row(j + 1);
+    float* out = cells.max.data() + static_cast<std::size_t>(j) * cells.width;
     for (int i = 0; i < cells.width; ++i)
-      cells.max[static_cast<std::size_t>(j) * cells.width + i] = std::max(
-          {height.at(i, j), height.at(i + 1, j), height.at(i, j + 1), height.at(i + 1, j + 1)});
-  levels_.push_back(std::move(cells));
-  while (levels_.back().width > 1 || levels_.back().height > 1) {
-    const Level& below = levels_.back();
-    Level above{(below.width + 1) / 2, (below.height + 1) / 2, {}, {}};
-    above.max.assign(static_cast<std::size_t>(above.width) * above.height,
-                     -std::numeric_limits<float>::infinity());
-    for (int j = 0; j < below.height; ++j)
-      for (int i = 0; i < below.width; ++i) {
-        float& parent = above.max[static_cast<std::size_t>(j / 2) * above.width + i / 2];
-        parent = std::max(parent, below.max[static_cast<std::size_t>(j) * below.width + i]);
-      }
-    levels_.push_back(std::move(above));
+      out[i] = std::max(std::max(near[i], near[i + 1]), std::max(far[i], far[i + 1]));
   }
+  levels_.push_back(std::move(cells));
+  while (levels_.back().width > 1 || levels_.back().height > 1)
+    levels_.push_back(coarser(levels_.back()));
   SlopeLevels slopes = slope_levels(height, kSlopeLevel);
   steepest_gradient_ = slopes.steepest;
   if (levels() == kSlopeLevel + static_cast<int>(slopes.levels.size()))

@@ -102,6 +102,8 @@ private:
     std::vector<float> slope; // empty below kSlopeLevel
   };
 
+  static Level coarser(const Level& below);
+
   const HeightField* height_;
   std::vector<Level> levels_;
   std::vector<LevelView> views_; // into levels_, which never changes after construction
