@@ -106,7 +106,9 @@ std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const Axis
     }
     // Skip the block. When the step enters another parent block and the ray passes above that
     // parent too, skip the parent as well, and so on up: the ray strides again once it clears
-    // the ground, and a parent that does not let it pass costs one comparison, not a detour.
+    // the ground, and a parent that does not let it pass costs one comparison, not a detour. A
+    // rising ray tests its parent after every step, since it may have risen above it since the
+    // last test; a falling one only gets lower over the same parent.
     for (;;) {
       if (t_out >= t_end)
         return std::nullopt;
@@ -122,7 +124,7 @@ std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const Axis
       const bool new_parent = ((next_x ^ bx) | (next_y ^ by)) > 1;
       bx = next_x;
       by = next_y;
-      if (new_parent && here != top) {
+      if ((new_parent || !Descending) && here != top) {
         const int up_x = bx >> 1;
         const int up_y = by >> 1;
         const double up_tx = x.exit(up_x, level + 1);
