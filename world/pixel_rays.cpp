@@ -44,8 +44,9 @@ ProvenStart proven_start(const Eigen::Vector3d& upper, double upper_ground,
   if (rise < 0.0)
     return {};
   const double t_start = t_lower / k * (1.0 - kStartMargin);
-  return {t_start, apart > 0.0 ? rise / apart : kNoHit, rise >= lipschitz * apart,
-          t_start * apart <= cell_m};
+  if (rise >= lipschitz * apart)
+    return {t_start, kNoHit, true, true};
+  return {t_start, rise / apart, false, t_start * apart <= cell_m};
 }
 
 } // namespace
