@@ -170,8 +170,8 @@ nav::Image<std::uint8_t> Renderer::render_eye(const nav::StereoRig& rig, nav::Ey
       weights[u] = sampler.texture_weight(points[u], caster.directions()[u], t);
     }
     for (int u = 0; u < width; ++u)
-      row_values[u] = std::isfinite(caster.hits()[u]) ? sampler.grey_with(points[u], weights[u])
-                                                      : sky_grey;
+      row_values[u] =
+          std::isfinite(caster.hits()[u]) ? sampler.grey_with(points[u], weights[u]) : sky_grey;
   }
   nav::Image<std::uint8_t> image(rig.width(), rig.height());
   for (int v = 0; v < image.height(); ++v) {
