@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace marsokhod::nav::detail {
@@ -9,87 +10,121 @@ namespace {
 
 constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
 
-// The longest sequence of each column's judged pixels, read from the bottom row up, whose
-// ground distance never decreases, by patience sorting run on every column at once, row by
-// row, so that the images are read in memory order: column x's chain ends are tails[x * height
-// + k], the end of the best chain of k + 1 pixels so far (the one with the smallest distance).
-// Ground that simply recedes extends the longest chain, which costs one comparison against
-// `last`, kept per column in one short array.
-class ColumnChains {
-public:
-  ColumnChains(const TerrainPoints& terrain, std::pmr::memory_resource* memory)
-      : terrain_(terrain), width_(terrain.width()), height_(terrain.height()),
-        parent_(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), -1, memory),
-        tails_(parent_.size(), -1, memory), length_(static_cast<std::size_t>(width_), 0, memory),
-        last_(static_cast<std::size_t>(width_), 0.0F, memory),
-        kept_(width_, height_, 1, 0, memory) {}
+// The judged pixels of every column, bottom row first, gathered row by row so that the image
+// is read in memory order: column x holds count[x] entries from x * height on.
+struct Columns {
+  Columns(int width, int rows_per_column, std::pmr::memory_resource* memory)
+      : height(rows_per_column), count(static_cast<std::size_t>(width), 0, memory),
+        rows(static_cast<std::size_t>(width) * static_cast<std::size_t>(rows_per_column), memory),
+        ranges(rows.size(), memory) {}
 
-  std::uint64_t build(const Image<std::uint8_t>& zone) {
-    std::uint64_t tests = 0;
-    for (int y = height_ - 1; y >= 0; --y) {
+  void gather(const TerrainPoints& terrain, const Image<std::uint8_t>& zone) {
+    for (int y = terrain.height() - 1; y >= 0; --y) {
       const std::uint8_t* judged = zone.row(y);
-      const float* range = terrain_.range.row(y);
-      for (int x = 0; x < width_; ++x) {
+      const float* range = terrain.range.row(y);
+      for (int x = 0; x < terrain.width(); ++x) {
         if (judged[x] == kUnknown)
           continue;
-        tests += add(x, y * width_ + x, range[x]);
+        const std::size_t at =
+            start(x) + static_cast<std::size_t>(count[static_cast<std::size_t>(x)]++);
+        rows[at] = y;
+        ranges[at] = range[x];
       }
     }
-    for (int x = 0; x < width_; ++x) {
-      const int n = length_[static_cast<std::size_t>(x)];
-      for (int p = n == 0 ? -1 : tail(x, n - 1); p >= 0; p = parent_[static_cast<std::size_t>(p)])
-        kept_.data()[p] = 1;
+  }
+  std::size_t start(int x) const {
+    return static_cast<std::size_t>(x) * static_cast<std::size_t>(height);
+  }
+  std::span<const float> ranges_of(int x) const {
+    return {ranges.data() + start(x), static_cast<std::size_t>(count[static_cast<std::size_t>(x)])};
+  }
+  std::span<const int> rows_of(int x) const {
+    return {rows.data() + start(x), static_cast<std::size_t>(count[static_cast<std::size_t>(x)])};
+  }
+
+  int height;
+  std::pmr::vector<int> count;
+  std::pmr::vector<int> rows;
+  std::pmr::vector<float> ranges;
+};
+
+// The longest sequence of a column's pixels whose ground distance never decreases, by patience
+// sorting: tails_[k] ends the best chain of k + 1 pixels found so far (the one with the smallest
+// distance); equal distances may follow each other. Buffers are reused column after column.
+class LongestChain {
+public:
+  explicit LongestChain(std::pmr::memory_resource* memory)
+      : tails_(memory), parent_(memory), kept_(memory) {}
+
+  std::uint64_t find(std::span<const float> ranges) {
+    const std::size_t n = ranges.size();
+    tails_.clear();
+    parent_.resize(n);
+    kept_.assign(n, 0);
+    std::uint64_t tests = n;
+    for (std::size_t i = 0; i < n; ++i) {
+      const float r = ranges[i];
+      // Ground seen farther up the column usually extends the longest chain: test that first.
+      ++tests;
+      if (tails_.empty() || ranges[static_cast<std::size_t>(tails_.back())] <= r) {
+        parent_[i] = tails_.empty() ? -1 : tails_.back();
+        tails_.push_back(static_cast<int>(i));
+        continue;
+      }
+      // Otherwise the first chain end farther than r: r may follow every end before it.
+      std::size_t low = 0;
+      std::size_t high = tails_.size() - 1;
+      while (low < high) {
+        const std::size_t mid = (low + high) / 2;
+        ++tests;
+        if (ranges[static_cast<std::size_t>(tails_[mid])] <= r)
+          low = mid + 1;
+        else
+          high = mid;
+      }
+      parent_[i] = low == 0 ? -1 : tails_[low - 1];
+      if (low == tails_.size())
+        tails_.push_back(static_cast<int>(i));
+      else
+        tails_[low] = static_cast<int>(i);
     }
+    for (int i = tails_.empty() ? -1 : tails_.back(); i >= 0;
+         i = parent_[static_cast<std::size_t>(i)])
+      kept_[static_cast<std::size_t>(i)] = 1;
     return tests;
   }
 
-  bool kept(int x, int y) const { return kept_(x, y) != 0; }
+  bool kept(std::size_t i) const { return kept_[i] != 0; }
 
 private:
-  int& tail(int x, int k) {
-    return tails_[static_cast<std::size_t>(x) * static_cast<std::size_t>(height_) +
-                  static_cast<std::size_t>(k)];
-  }
-  float range_of(int pixel) const { return terrain_.range.data()[pixel]; }
-
-  // Adds pixel p (column x, distance r) to its column's chains; returns the comparisons made.
-  std::uint64_t add(int x, int p, float r) {
-    const auto column = static_cast<std::size_t>(x);
-    int& n = length_[column];
-    if (n == 0 || last_[column] <= r) {
-      parent_[static_cast<std::size_t>(p)] = n == 0 ? -1 : tail(x, n - 1);
-      tail(x, n++) = p;
-      last_[column] = r;
-      return 1;
-    }
-    // The first chain end farther than r: r may follow every end before it.
-    std::uint64_t tests = 1;
-    int low = 0;
-    int high = n - 1;
-    while (low < high) {
-      const int mid = (low + high) / 2;
-      ++tests;
-      if (range_of(tail(x, mid)) <= r)
-        low = mid + 1;
-      else
-        high = mid;
-    }
-    parent_[static_cast<std::size_t>(p)] = low == 0 ? -1 : tail(x, low - 1);
-    tail(x, low) = p;
-    if (low == n - 1)
-      last_[column] = r;
-    return tests;
-  }
-
-  const TerrainPoints& terrain_;
-  int width_;
-  int height_;
-  std::pmr::vector<int> parent_;
   std::pmr::vector<int> tails_;
-  std::pmr::vector<int> length_;
-  std::pmr::vector<float> last_;
-  Image<std::uint8_t> kept_;
+  std::pmr::vector<int> parent_;
+  std::pmr::vector<std::uint8_t> kept_;
 };
+
+// Pixels off the chain that lie beyond the next chain pixel above them, or short of the last
+// one below them, by more than the tolerance become unknown.
+void mark_contradictions(const LongestChain& chain, std::span<const float> ranges,
+                         std::span<const int> rows, double tolerance, int x,
+                         Image<std::uint8_t>& zone) {
+  const std::size_t n = ranges.size();
+  double below = -1.0;
+  std::size_t next = 0; // the first chain pixel at or above pixel i
+  for (std::size_t i = 0; i < n; ++i) {
+    if (chain.kept(i)) {
+      below = ranges[i];
+      continue;
+    }
+    next = std::max(next, i);
+    while (next < n && !chain.kept(next))
+      ++next;
+    const double r = ranges[i];
+    const bool too_far = next < n && r > ranges[next] * (1.0 + tolerance) + kOrderSlack_m;
+    const bool too_near = below >= 0.0 && r < below * (1.0 - tolerance) - kOrderSlack_m;
+    if (too_far || too_near)
+      zone(x, rows[i]) = kUnknown;
+  }
+}
 
 } // namespace
 
@@ -97,45 +132,14 @@ std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions&
                                 Image<std::uint8_t>& zone, std::pmr::memory_resource* memory) {
   if (options.order_tolerance <= 0.0)
     return 0;
-  ColumnChains chains(terrain, memory);
-  std::uint64_t tests = chains.build(zone);
-  const double tolerance = options.order_tolerance;
-  const int width = zone.width();
-  // The distance of the nearest chain pixel already passed in each column, -1 for none: below
-  // the pixel on the way up, above it on the way down.
-  std::pmr::vector<float> passed(static_cast<std::size_t>(width), -1.0F, memory);
-  for (int y = zone.height() - 1; y >= 0; --y) {
-    std::uint8_t* judged = zone.row(y);
-    const float* range = terrain.range.row(y);
-    for (int x = 0; x < width; ++x) {
-      if (judged[x] == kUnknown)
-        continue;
-      float& below = passed[static_cast<std::size_t>(x)];
-      if (chains.kept(x, y)) {
-        below = range[x];
-        continue;
-      }
-      ++tests;
-      if (below >= 0.0F && range[x] < below * (1.0 - tolerance) - kOrderSlack_m)
-        judged[x] = kUnknown;
-    }
-  }
-  std::fill(passed.begin(), passed.end(), -1.0F);
-  for (int y = 0; y < zone.height(); ++y) {
-    std::uint8_t* judged = zone.row(y);
-    const float* range = terrain.range.row(y);
-    for (int x = 0; x < width; ++x) {
-      if (judged[x] == kUnknown)
-        continue;
-      float& above = passed[static_cast<std::size_t>(x)];
-      if (chains.kept(x, y)) {
-        above = range[x];
-        continue;
-      }
-      ++tests;
-      if (above >= 0.0F && range[x] > above * (1.0 + tolerance) + kOrderSlack_m)
-        judged[x] = kUnknown;
-    }
+  Columns columns(zone.width(), zone.height(), memory);
+  columns.gather(terrain, zone);
+  LongestChain chain(memory);
+  std::uint64_t tests = 0;
+  for (int x = 0; x < zone.width(); ++x) {
+    tests += chain.find(columns.ranges_of(x));
+    mark_contradictions(chain, columns.ranges_of(x), columns.rows_of(x), options.order_tolerance, x,
+                        zone);
   }
   return tests;
 }
