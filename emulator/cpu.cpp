@@ -6,6 +6,11 @@ namespace marsokhod::emulator {
 
 Cpu::Cpu(Kernel& kernel, std::string name, CpuTiming timing)
     : kernel_(&kernel), name_(std::move(name)), timing_(timing) {
+  if (timing_.timeslice <= 0) {
+    // No timeslicing: low-priority processes are granted slices that never end.
+    next_tick_ = kNever;
+    slice_end_ = kNever;
+  }
   kernel.register_cpu(*this);
 }
 

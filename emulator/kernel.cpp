@@ -48,6 +48,7 @@ EventId Kernel::schedule_at(Tick at, EventPriority priority, EventHandler& handl
                             std::uint64_t tag, EventKind kind) {
   at = std::max(at, now_);
   horizon_ = std::min(horizon_, at);
+  fast_until_ = std::min(fast_until_, at);
   return impl_->events.push(at, priority, &handler, tag, nullptr, kind);
 }
 
@@ -55,6 +56,7 @@ EventId Kernel::schedule_at(Tick at, EventPriority priority, std::function<void(
                             EventKind kind) {
   at = std::max(at, now_);
   horizon_ = std::min(horizon_, at);
+  fast_until_ = std::min(fast_until_, at);
   return impl_->events.push(at, priority, nullptr, 0, std::move(action), kind);
 }
 
@@ -81,6 +83,7 @@ private:
 void Kernel::refresh_horizon() {
   const Tick after_limit = impl_->limit == kNever ? kNever : impl_->limit + 1;
   horizon_ = std::min(impl_->events.next_time(), after_limit);
+  refresh_fast_until();
 }
 
 RunResult Kernel::run_until(Tick limit) {

@@ -11,10 +11,10 @@
 namespace marsokhod::emulator {
 
 void Kernel::Impl::start_fiber(Process& p, std::size_t stack_bytes) {
-  auto& parked = idle[stack_bytes];
-  if (!parked.empty()) {
-    p.context_ = std::move(parked.back());
-    parked.pop_back();
+  auto& spare = parked(stack_bytes);
+  if (!spare.empty()) {
+    p.context_ = std::move(spare.back());
+    spare.pop_back();
     p.context_->process = &p;
     return;
   }
@@ -56,14 +56,14 @@ boost::context::fiber Kernel::Impl::fiber_main(detail::Context& context) {
     finish(p);
     Process* next = owner->current_;
     zombie = &p;
-    auto& parked = idle[context.stack_bytes];
-    if (parked.size() >= kMaxIdlePerSize) {
+    auto& spare = parked(context.stack_bytes);
+    if (spare.size() >= kMaxIdlePerSize) {
       // Enough spare fibers: this one ends and its stack goes back to the pool.
       save_slot = &discarded;
       return std::move(context_of(next));
     }
     context.process = nullptr;
-    parked.push_back(std::move(p.context_));
+    spare.push_back(std::move(p.context_));
     switch_to(context_of(next), context.fiber);
   }
 }
@@ -93,6 +93,7 @@ void Kernel::Impl::preempt(Cpu& cpu, Process& low) {
     // kernel call (consume, block, yield, end); no simulated time passes before that, and
     // the operation that readied the high process completes first, as an instruction would.
     cpu.preempt_requested_ = true;
+    owner->refresh_fast_until();
     return;
   }
   low.state_ = ProcessState::ready;
@@ -112,6 +113,7 @@ void Kernel::Impl::ComputeDone::on_event(std::uint64_t tag) {
   p.compute_event_ = 0;
   p.compute_left_ = 0;
   kernel->current_ = &p;
+  kernel->refresh_fast_until();
   ++kernel->switches_;
   kernel->impl_->switch_to(p.context_->fiber, kernel->impl_->main);
 }
@@ -136,27 +138,9 @@ void Kernel::Impl::Dispatch::on_event(std::uint64_t tag) {
   Impl& impl = *kernel->impl_;
   impl.grant(cpu, *next);
   kernel->current_ = next;
+  kernel->refresh_fast_until();
   ++kernel->switches_;
   impl.switch_to(next->context_->fiber, impl.main);
-}
-
-Kernel::Impl::Registry::~Registry() {
-  while (oldest_ != nullptr) {
-    remove_and_delete(oldest_);
-  }
-}
-
-void Kernel::Impl::Registry::add(Process* p) {
-  p->older_ = newest_;
-  p->newer_ = nullptr;
-  (newest_ != nullptr ? newest_->newer_ : oldest_) = p;
-  newest_ = p;
-}
-
-void Kernel::Impl::Registry::remove_and_delete(Process* p) {
-  (p->older_ != nullptr ? p->older_->newer_ : oldest_) = p->newer_;
-  (p->newer_ != nullptr ? p->newer_->older_ : newest_) = p->older_;
-  delete p;
 }
 
 } // namespace marsokhod::emulator

@@ -2,13 +2,13 @@
 
 #include "event_queue.hpp"
 #include "fiber.hpp"
+#include "process_registry.hpp"
 #include "stack_pool.hpp"
 
 #include "marsokhod/emulator/kernel.hpp"
 
 #include <cstdint>
 #include <exception>
-#include <map>
 #include <memory>
 #include <vector>
 
@@ -61,29 +61,26 @@ struct Kernel::Impl {
   int unwinding = 0; // kills in progress (a dying PAR kills its branches)
   std::exception_ptr failure;
   std::uint64_t next_process_id = 1;
-  /// Every process not yet deleted, oldest first (intrusive, so spawning allocates once).
-  class Registry {
-  public:
-    Registry() = default;
-    Registry(const Registry&) = delete;
-    Registry& operator=(const Registry&) = delete;
-    ~Registry();
-    void add(Process* p);
-    void remove_and_delete(Process* p);
-    Process* oldest() const { return oldest_; }
-    static Process* newer(const Process* p) { return p->newer_; }
-    Process* newest() const { return newest_; }
-    static Process* older(const Process* p) { return p->older_; }
-
-  private:
-    Process* oldest_ = nullptr;
-    Process* newest_ = nullptr;
-  };
+  using Registry = detail::ProcessRegistry;
   Registry processes;
   std::vector<Cpu*> cpus;
   std::vector<std::unique_ptr<Cpu>> owned_cpus;
-  /// Parked fibers by stack size; declared after `stacks`, so destroyed (unwound) first.
-  std::map<std::size_t, std::vector<std::unique_ptr<detail::Context>>> idle;
+  /// Parked fibers of one stack size.
+  struct Parked {
+    std::size_t stack_bytes = 0;
+    std::vector<std::unique_ptr<detail::Context>> fibers;
+  };
+  /// Parked fibers by stack size (a program uses a few sizes, so a list); declared after
+  /// `stacks`, so destroyed (unwound) first.
+  std::vector<Parked> idle;
+  std::vector<std::unique_ptr<detail::Context>>& parked(std::size_t stack_bytes) {
+    for (Parked& entry : idle) {
+      if (entry.stack_bytes == stack_bytes) {
+        return entry.fibers;
+      }
+    }
+    return idle.emplace_back(Parked{stack_bytes, {}}).fibers;
+  }
   static constexpr std::size_t kMaxIdlePerSize = 256;
 
   void switch_to(boost::context::fiber& target, boost::context::fiber& save);
@@ -95,6 +92,9 @@ struct Kernel::Impl {
   boost::context::fiber& context_of(Process* p) { return p ? p->context_->fiber : main; }
   /// Gives the CPU of `p` (which stops running) to its next ready process or to the loop.
   Process* leave_cpu(Process& p);
+  /// Makes `next` the process holding `cpu`, with its timeslice.
+  void assign(Cpu& cpu, Process& next);
+  /// As assign(), for a CPU that was idle: its busy time and trace slice start.
   void grant(Cpu& cpu, Process& next);
   void release(Cpu& cpu);
   void request_dispatch(Cpu& cpu, Tick at);

@@ -31,13 +31,17 @@ inline Process& require_current(Process* current, const char* operation) {
 Process& Kernel::spawn(Cpu& cpu, std::string name, std::function<void()> body,
                        SpawnOptions options) {
   const std::uint64_t id = impl_->next_process_id++;
-  auto owned = std::unique_ptr<Process>(new Process(cpu, std::move(name), id, options.priority));
-  Process& p = *owned;
+  Process& p = *impl_->processes.create(cpu, std::move(name), id, options.priority);
   p.body_ = std::move(body);
   p.exit_hook_ = options.exit_hook;
-  impl_->start_fiber(p,
-                     options.stack_bytes != 0 ? options.stack_bytes : impl_->options.stack_bytes);
-  impl_->processes.add(owned.release());
+  try {
+    impl_->start_fiber(p,
+                       options.stack_bytes != 0 ? options.stack_bytes : impl_->options.stack_bytes);
+  } catch (...) {
+    impl_->processes.destroy(&p);
+    throw;
+  }
+  impl_->processes.add(&p);
   ++live_;
   ++cpu.live_count_;
   cpu.push_back(p);
@@ -78,6 +82,7 @@ void Kernel::consume_slowly(Tick duration) {
     p.compute_event_ = schedule_at(p.compute_end_, event_priority::normal, impl_->compute_done,
                                    detail::tag_of(&p));
     current_ = nullptr;
+    fast_until_ = kNoFastPath;
     ++switches_;
     impl_->switch_to(impl_->main, p.context_->fiber);
   }
@@ -106,10 +111,7 @@ bool Kernel::block_until(Tick deadline, WaitInfo why) {
   return p.timed_out_;
 }
 
-void Kernel::wake(Process& p) {
-  if (p.state_ != ProcessState::blocked) {
-    return;
-  }
+void Kernel::wake_slowly(Process& p) {
   if (p.timeout_event_ != 0) {
     cancel(std::exchange(p.timeout_event_, 0));
   }
@@ -167,6 +169,7 @@ void Kernel::kill(Process& p) {
   --live_;
   --cpu.live_count_;
   Process* saved = std::exchange(current_, &p);
+  refresh_fast_until();
   ++impl_->unwinding;
   {
     // Destroying a suspended fiber throws forced_unwind inside it: its destructors run.
@@ -174,6 +177,7 @@ void Kernel::kill(Process& p) {
   }
   --impl_->unwinding;
   current_ = saved;
+  refresh_fast_until();
   impl_->processes.remove_and_delete(&p);
 }
 

@@ -3,6 +3,7 @@
 #include "marsokhod/emulator/link.hpp"
 #include "marsokhod/emulator/memory_arena_hooks.hpp"
 
+#include <atomic>
 #include <stdexcept>
 
 namespace marsokhod::emulator {
@@ -30,10 +31,12 @@ private:
   Address address_;
 };
 
+std::atomic<std::uint64_t> last_serial{0};
+
 } // namespace
 
 Node::Node(Kernel& kernel, const NodeSpec& spec)
-    : kernel_(&kernel), spec_(spec),
+    : kernel_(&kernel), serial_(++last_serial), spec_(spec),
       cpu_(std::make_unique<Cpu>(kernel, spec.name, timing_of(spec.cpu))),
       memory_(std::make_unique<MemoryArena>(spec.memory)), powered_(spec.powered) {
   cpu_->set_node(this);

@@ -28,8 +28,8 @@ const char* to_string(WaitKind kind) {
   return "?";
 }
 
-Process::Process(Cpu& cpu, std::string name, std::uint64_t id, Priority priority)
-    : name_(std::move(name)), cpu_(&cpu), id_(id), priority_(priority) {}
+Process::Process(Cpu& cpu, std::string&& name, std::uint64_t id, Priority priority)
+    : cpu_(&cpu), priority_(priority), id_(id), name_(std::move(name)) {}
 
 Process::~Process() = default;
 

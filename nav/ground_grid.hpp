@@ -32,7 +32,8 @@ public:
   int index(int ix, int iy) const { return iy * nx_ + ix; }
   bool inside(int ix, int iy) const { return ix >= 0 && iy >= 0 && ix < nx_ && iy < ny_; }
 
-  /// Highest and lowest elevation of each cell; +inf for an empty cell.
+  /// Highest and lowest elevation of each cell; -inf (highest) and +inf (lowest) for an empty
+  /// cell, so that an empty cell never decides a maximum or a minimum.
   const std::pmr::vector<float>& highest() const { return highest_; }
   const std::pmr::vector<float>& lowest() const { return lowest_; }
   /// Mean elevation of a cell (NaN when empty) and its number of points.

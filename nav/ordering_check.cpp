@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace marsokhod::nav::detail {
@@ -9,79 +10,121 @@ namespace {
 
 constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
 
-// One column's judged pixels from the bottom row up, the longest run of them whose ground
-// distance never decreases, and the buffers for finding it; reused column after column.
-class ColumnOrder {
-public:
-  explicit ColumnOrder(std::pmr::memory_resource* memory)
-      : rows_(memory), ranges_(memory), tails_(memory), parent_(memory), kept_(memory) {}
+// The judged pixels of every column, bottom row first, gathered row by row so that the image
+// is read in memory order: column x holds count[x] entries from x * height on.
+struct Columns {
+  Columns(int width, int rows_per_column, std::pmr::memory_resource* memory)
+      : height(rows_per_column), count(static_cast<std::size_t>(width), 0, memory),
+        rows(static_cast<std::size_t>(width) * static_cast<std::size_t>(rows_per_column), memory),
+        ranges(rows.size(), memory) {}
 
-  void load(const TerrainPoints& terrain, const Image<std::uint8_t>& zone, int x) {
-    rows_.clear();
-    ranges_.clear();
+  void gather(const TerrainPoints& terrain, const Image<std::uint8_t>& zone) {
     for (int y = terrain.height() - 1; y >= 0; --y) {
-      if (zone(x, y) == kUnknown)
-        continue;
-      rows_.push_back(y);
-      ranges_.push_back(terrain.range(x, y));
+      const std::uint8_t* judged = zone.row(y);
+      const float* range = terrain.range.row(y);
+      for (int x = 0; x < terrain.width(); ++x) {
+        if (judged[x] == kUnknown)
+          continue;
+        const std::size_t at =
+            start(x) + static_cast<std::size_t>(count[static_cast<std::size_t>(x)]++);
+        rows[at] = y;
+        ranges[at] = range[x];
+      }
     }
   }
+  std::size_t start(int x) const {
+    return static_cast<std::size_t>(x) * static_cast<std::size_t>(height);
+  }
+  std::span<const float> ranges_of(int x) const {
+    return {ranges.data() + start(x), static_cast<std::size_t>(count[static_cast<std::size_t>(x)])};
+  }
+  std::span<const int> rows_of(int x) const {
+    return {rows.data() + start(x), static_cast<std::size_t>(count[static_cast<std::size_t>(x)])};
+  }
 
-  // Patience sorting: tails_[k] is the pixel ending the best chain of k + 1 pixels found so
-  // far (the one with the smallest distance); equal distances may follow each other.
-  std::uint64_t find_longest_chain() {
-    const std::size_t n = ranges_.size();
+  int height;
+  std::pmr::vector<int> count;
+  std::pmr::vector<int> rows;
+  std::pmr::vector<float> ranges;
+};
+
+// The longest sequence of a column's pixels whose ground distance never decreases, by patience
+// sorting: tails_[k] ends the best chain of k + 1 pixels found so far (the one with the smallest
+// distance); equal distances may follow each other. Buffers are reused column after column.
+class LongestChain {
+public:
+  explicit LongestChain(std::pmr::memory_resource* memory)
+      : tails_(memory), parent_(memory), kept_(memory) {}
+
+  std::uint64_t find(std::span<const float> ranges) {
+    const std::size_t n = ranges.size();
     tails_.clear();
-    parent_.assign(n, -1);
+    parent_.resize(n);
     kept_.assign(n, 0);
-    std::uint64_t tests = 0;
+    std::uint64_t tests = n;
     for (std::size_t i = 0; i < n; ++i) {
-      const float r = ranges_[i];
-      const auto place = std::upper_bound(tails_.begin(), tails_.end(), r, [&](float v, int t) {
+      const float r = ranges[i];
+      // Ground seen farther up the column usually extends the longest chain: test that first.
+      ++tests;
+      if (tails_.empty() || ranges[static_cast<std::size_t>(tails_.back())] <= r) {
+        parent_[i] = tails_.empty() ? -1 : tails_.back();
+        tails_.push_back(static_cast<int>(i));
+        continue;
+      }
+      // Otherwise the first chain end farther than r: r may follow every end before it.
+      std::size_t low = 0;
+      std::size_t high = tails_.size() - 1;
+      while (low < high) {
+        const std::size_t mid = (low + high) / 2;
         ++tests;
-        return v < ranges_[static_cast<std::size_t>(t)];
-      });
-      parent_[i] = place == tails_.begin() ? -1 : *(place - 1);
-      if (place == tails_.end())
+        if (ranges[static_cast<std::size_t>(tails_[mid])] <= r)
+          low = mid + 1;
+        else
+          high = mid;
+      }
+      parent_[i] = low == 0 ? -1 : tails_[low - 1];
+      if (low == tails_.size())
         tails_.push_back(static_cast<int>(i));
       else
-        *place = static_cast<int>(i);
+        tails_[low] = static_cast<int>(i);
     }
     for (int i = tails_.empty() ? -1 : tails_.back(); i >= 0;
          i = parent_[static_cast<std::size_t>(i)])
       kept_[static_cast<std::size_t>(i)] = 1;
-    return tests + n;
+    return tests;
   }
 
-  // Pixels off the chain that lie beyond the next chain pixel above them, or short of the
-  // last one below them, by more than the tolerance become unknown.
-  void mark_contradictions(double tolerance, int x, Image<std::uint8_t>& zone) const {
-    const std::size_t n = ranges_.size();
-    float below = -1.0F;
-    std::size_t next = 0; // first chain pixel at or above i
-    for (std::size_t i = 0; i < n; ++i) {
-      if (kept_[i] != 0) {
-        below = ranges_[i];
-        continue;
-      }
-      next = std::max(next, i);
-      while (next < n && kept_[next] == 0)
-        ++next;
-      const double r = ranges_[i];
-      const bool too_far = next < n && r > ranges_[next] * (1.0 + tolerance) + kOrderSlack_m;
-      const bool too_near = below >= 0.0F && r < below * (1.0 - tolerance) - kOrderSlack_m;
-      if (too_far || too_near)
-        zone(x, rows_[i]) = kUnknown;
-    }
-  }
+  bool kept(std::size_t i) const { return kept_[i] != 0; }
 
 private:
-  std::pmr::vector<int> rows_;
-  std::pmr::vector<float> ranges_;
   std::pmr::vector<int> tails_;
   std::pmr::vector<int> parent_;
   std::pmr::vector<std::uint8_t> kept_;
 };
+
+// Pixels off the chain that lie beyond the next chain pixel above them, or short of the last
+// one below them, by more than the tolerance become unknown.
+void mark_contradictions(const LongestChain& chain, std::span<const float> ranges,
+                         std::span<const int> rows, double tolerance, int x,
+                         Image<std::uint8_t>& zone) {
+  const std::size_t n = ranges.size();
+  double below = -1.0;
+  std::size_t next = 0; // the first chain pixel at or above pixel i
+  for (std::size_t i = 0; i < n; ++i) {
+    if (chain.kept(i)) {
+      below = ranges[i];
+      continue;
+    }
+    next = std::max(next, i);
+    while (next < n && !chain.kept(next))
+      ++next;
+    const double r = ranges[i];
+    const bool too_far = next < n && r > ranges[next] * (1.0 + tolerance) + kOrderSlack_m;
+    const bool too_near = below >= 0.0 && r < below * (1.0 - tolerance) - kOrderSlack_m;
+    if (too_far || too_near)
+      zone(x, rows[i]) = kUnknown;
+  }
+}
 
 } // namespace
 
@@ -89,12 +132,14 @@ std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions&
                                 Image<std::uint8_t>& zone, std::pmr::memory_resource* memory) {
   if (options.order_tolerance <= 0.0)
     return 0;
-  ColumnOrder column(memory);
+  Columns columns(zone.width(), zone.height(), memory);
+  columns.gather(terrain, zone);
+  LongestChain chain(memory);
   std::uint64_t tests = 0;
   for (int x = 0; x < zone.width(); ++x) {
-    column.load(terrain, zone, x);
-    tests += column.find_longest_chain();
-    column.mark_contradictions(options.order_tolerance, x, zone);
+    tests += chain.find(columns.ranges_of(x));
+    mark_contradictions(chain, columns.ranges_of(x), columns.rows_of(x), options.order_tolerance, x,
+                        zone);
   }
   return tests;
 }

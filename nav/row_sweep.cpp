@@ -17,18 +17,32 @@ constexpr float kUnreached = std::numeric_limits<float>::infinity();
 // Straight ahead first, so that exact ties keep the path straight.
 constexpr int kSteps[3] = {0, -1, 1};
 
-// The edge's weight, or +inf when its ends lie farther apart than weights.max_edge_m.
-double edge_weight(const TerrainPoints& terrain, int x_from, int y_from, int x_to, int y_to,
-                   const EdgeWeights& weights) {
-  const double run =
-      std::hypot(static_cast<double>(terrain.forward(x_to, y_to)) - terrain.forward(x_from, y_from),
-                 static_cast<double>(terrain.left(x_to, y_to)) - terrain.left(x_from, y_from));
-  if (run > weights.max_edge_m)
+// One row of the terrain, as the sweep reads it.
+struct TerrainRow {
+  const float* forward;
+  const float* left;
+  const float* elevation;
+
+  TerrainRow(const TerrainPoints& terrain, int y)
+      : forward(terrain.forward.row(y)), left(terrain.left.row(y)),
+        elevation(terrain.elevation.row(y)) {}
+};
+
+// The weight of the edge from pixel `from` of row `below` to pixel `to` of row `here`, or +inf
+// when its ends lie farther apart than weights.max_edge_m.
+double edge_weight(const TerrainRow& below, int from, const TerrainRow& here, int to,
+                   const EdgeWeights& weights, double max_edge_squared) {
+  const double ahead = static_cast<double>(here.forward[to]) - below.forward[from];
+  const double across = static_cast<double>(here.left[to]) - below.left[from];
+  // Metres between neighbouring pixels: the squares can neither overflow nor underflow, so the
+  // plain root is as good as std::hypot and several times cheaper.
+  const double squared = ahead * ahead + across * across;
+  if (squared > max_edge_squared)
     return kUnreached;
-  const double climb = std::max(0.0, std::abs(static_cast<double>(terrain.elevation(x_to, y_to)) -
-                                              terrain.elevation(x_from, y_from)) -
-                                         weights.flat_tolerance_m);
-  return climb + weights.length_weight * run;
+  const double climb =
+      std::max(0.0, std::abs(static_cast<double>(here.elevation[to]) - below.elevation[from]) -
+                        weights.flat_tolerance_m);
+  return climb + weights.length_weight * std::sqrt(squared);
 }
 
 void check_sweep_arguments(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoint start,
@@ -58,21 +72,28 @@ RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoi
                  Image<std::int8_t>(width, terrain.height(), 1, kNoPredecessor, memory), start,
                  first_row};
   sweep.cost(start.x, start.y) = 0.0F;
+  const double max_edge_squared = weights.max_edge_m * weights.max_edge_m;
   for (int y = start.y - 1; y >= first_row; --y) {
-    const float* below = sweep.cost.row(y + 1);
+    const float* below_cost = sweep.cost.row(y + 1);
+    const TerrainRow below(terrain, y + 1);
+    const TerrainRow here(terrain, y);
+    const std::uint8_t* zone = zones.zone.row(y);
+    const std::ptrdiff_t channels = zones.zone.channels();
     float* cost = sweep.cost.row(y);
     std::int8_t* from = sweep.from.row(y);
     std::uint64_t relaxations = 0;
     for (int x = 0; x < width; ++x) {
-      if (!zones.traversable(x, y) || !terrain.known(x, y))
+      if (zone[x * channels] != static_cast<std::uint8_t>(Zone::traversable) ||
+          !std::isfinite(here.elevation[x]))
         continue;
       double best = kUnreached;
       for (const int step : kSteps) {
         const int xb = x + step;
-        if (xb < 0 || xb >= width || below[xb] == kUnreached)
+        if (xb < 0 || xb >= width || below_cost[xb] == kUnreached)
           continue;
         ++relaxations;
-        const double candidate = below[xb] + edge_weight(terrain, xb, y + 1, x, y, weights);
+        const double candidate =
+            below_cost[xb] + edge_weight(below, xb, here, x, weights, max_edge_squared);
         if (candidate < best) {
           best = candidate;
           from[x] = static_cast<std::int8_t>(step);

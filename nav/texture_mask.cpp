@@ -8,9 +8,11 @@ namespace {
 
 constexpr int kRadius = 2; // 5 x 5
 
-// Largest minus smallest grey level over +-kRadius along a row (clamped at the edges).
+// Largest and smallest grey level over +-kRadius along a row (clamped at the edges). The
+// interior is written as five whole-row passes, which the compiler turns into byte-vector
+// maxima and minima.
 void row_span(const std::uint8_t* row, int width, std::uint8_t* highest, std::uint8_t* lowest) {
-  for (int x = 0; x < width; ++x) {
+  const auto clamped_span = [&](int x) {
     std::uint8_t hi = 0;
     std::uint8_t lo = 255;
     for (int dx = std::max(0, x - kRadius); dx <= std::min(width - 1, x + kRadius); ++dx) {
@@ -19,6 +21,24 @@ void row_span(const std::uint8_t* row, int width, std::uint8_t* highest, std::ui
     }
     highest[x] = hi;
     lowest[x] = lo;
+  };
+  if (width <= 2 * kRadius) {
+    for (int x = 0; x < width; ++x)
+      clamped_span(x);
+    return;
+  }
+  for (int x = kRadius; x < width - kRadius; ++x) {
+    highest[x] = row[x - 2];
+    lowest[x] = row[x - 2];
+  }
+  for (int offset = -1; offset <= kRadius; ++offset)
+    for (int x = kRadius; x < width - kRadius; ++x) {
+      highest[x] = std::max(highest[x], row[x + offset]);
+      lowest[x] = std::min(lowest[x], row[x + offset]);
+    }
+  for (int x = 0; x < kRadius; ++x) {
+    clamped_span(x);
+    clamped_span(width - 1 - x);
   }
 }
 
@@ -33,16 +53,25 @@ Image<std::uint8_t> textured_pixels(ImageView<const std::uint8_t> image, int gre
   for (int y = 0; y < height; ++y)
     row_span(image.row(y), width, highest.row(y), lowest.row(y));
   Image<std::uint8_t> textured(width, height, 1, 0, memory);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      int hi = 0;
-      int lo = 255;
-      for (int dy = std::max(0, y - kRadius); dy <= std::min(height - 1, y + kRadius); ++dy) {
-        hi = std::max<int>(hi, highest(x, dy));
-        lo = std::min<int>(lo, lowest(x, dy));
+  std::pmr::vector<std::uint8_t> hi(static_cast<std::size_t>(width), memory);
+  std::pmr::vector<std::uint8_t> lo(static_cast<std::size_t>(width), memory);
+  const auto threshold = static_cast<int>(grey_range);
+  for (int y = 0; y < height; ++y) {
+    std::copy_n(highest.row(y), width, hi.begin());
+    std::copy_n(lowest.row(y), width, lo.begin());
+    for (int dy = std::max(0, y - kRadius); dy <= std::min(height - 1, y + kRadius); ++dy) {
+      const std::uint8_t* h = highest.row(dy);
+      const std::uint8_t* l = lowest.row(dy);
+      for (int x = 0; x < width; ++x) {
+        hi[static_cast<std::size_t>(x)] = std::max(hi[static_cast<std::size_t>(x)], h[x]);
+        lo[static_cast<std::size_t>(x)] = std::min(lo[static_cast<std::size_t>(x)], l[x]);
       }
-      textured(x, y) = hi - lo >= grey_range ? 255 : 0;
     }
+    std::uint8_t* out = textured.row(y);
+    for (int x = 0; x < width; ++x)
+      out[x] =
+          hi[static_cast<std::size_t>(x)] - lo[static_cast<std::size_t>(x)] >= threshold ? 255 : 0;
+  }
   return textured;
 }
 

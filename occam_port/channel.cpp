@@ -32,55 +32,32 @@ std::uint64_t channel_cycles(const Node& node, Instruction op, std::uint64_t cop
          cycles(op) + copied_words * static_cast<std::uint64_t>(costs[op].per_unit);
 }
 
-/// The process executing a channel operation and its node.
+/// The process executing a channel operation, its node and kernel.
 struct Here {
+  Kernel& kernel;
   Process& process;
   Node& node;
 };
 
+[[noreturn, gnu::cold, gnu::noinline]] void not_on_node() {
+  throw std::logic_error("channel used outside a simulated process on a node");
+}
+
 Here here() {
   Kernel* kernel = Kernel::active();
   Process* p = kernel != nullptr ? kernel->current() : nullptr;
-  if (p == nullptr || p->cpu().node() == nullptr) {
-    throw std::logic_error("channel used outside a simulated process on a node");
+  Node* node = p != nullptr ? p->cpu().node() : nullptr;
+  if (node == nullptr) [[unlikely]] {
+    not_on_node();
   }
-  return Here{*p, *p->cpu().node()};
+  return Here{*kernel, *p, *node};
 }
 
 } // namespace
 
-/// Withdraws a waiting side from the channel if its process is killed while it waits, so the
-/// channel never points into a stack that is gone; and forgets the channel if the channel
-/// goes first (a channel declared outside the processes, destroyed before the kernel).
-class ChanBase::Registration {
-public:
-  explicit Registration(ChanBase& channel) : channel_(&channel) {}
-  Registration(const Registration&) = delete;
-  Registration& operator=(const Registration&) = delete;
-  ~Registration() {
-    if (channel_ != nullptr && channel_->registration_ == this) {
-      channel_->state_ = State::empty;
-      channel_->waiter_ = nullptr;
-      channel_->data_ = nullptr;
-      channel_->registration_ = nullptr;
-    }
-  }
-  void wait(State state, Process& me, void* data, std::size_t bytes) {
-    channel_->state_ = state;
-    channel_->waiter_ = &me;
-    channel_->data_ = data;
-    channel_->data_bytes_ = bytes;
-    channel_->registration_ = this;
-  }
-  void channel_gone() { channel_ = nullptr; }
-
-private:
-  ChanBase* channel_;
-};
-
 ChanBase::~ChanBase() {
   if (registration_ != nullptr) {
-    registration_->channel_gone();
+    registration_->channel_ = nullptr;
   }
   if (alt_ != nullptr) {
     alt_->channel_gone(*this);
@@ -96,16 +73,40 @@ std::string ChanBase::describe() const {
 void ChanBase::place_on_link(emulator::LinkPort& output_port, emulator::LinkPort& input_port) {
   output_port_ = &output_port;
   input_port_ = &input_port;
+  // On a link the CPU no longer copies the message: what was worked out no longer holds.
+  output_charge_ = Charge{};
+  input_charge_ = Charge{};
+}
+
+emulator::Tick ChanBase::charge(Charge& cached, const Node& node, Instruction op,
+                                std::size_t bytes) const {
+  if (cached.node == node.serial() && cached.bytes == bytes) [[likely]] {
+    return cached.time;
+  }
+  const std::uint64_t cycles = channel_cycles(node, op, external() ? 0 : words(bytes));
+  cached = Charge{node.serial(), bytes, node.cycles(cycles)};
+  return cached.time;
 }
 
 void ChanBase::copy_message(void* destination, const void* source, CopyFn copy) const {
   copy(destination, source);
 }
 
-void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
-  auto [me, node] = here();
-  node.compute_cycles(channel_cycles(node, Instruction::out, external() ? 0 : words(bytes)));
-  if (external()) {
+void ChanBase::wait_here(Registration& registration, State state, Process& me, void* data,
+                         std::size_t bytes) {
+  registration.channel_ = this;
+  state_ = state;
+  waiter_ = &me;
+  data_ = data;
+  data_bytes_ = bytes;
+  registration_ = &registration;
+}
+
+void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy,
+                      Registration& registration) {
+  auto [kernel, me, node] = here();
+  kernel.consume(charge(output_charge_, node, Instruction::out, bytes));
+  if (external()) [[unlikely]] {
     output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
     return;
   }
@@ -117,21 +118,20 @@ void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy) {
     Process* reader = std::exchange(waiter_, nullptr);
     registration_ = nullptr;
     state_ = State::empty;
-    node.kernel().wake(*reader);
+    kernel.wake(*reader);
     return;
   }
-  Registration registration(*this);
-  registration.wait(State::writer_waiting, me, const_cast<void*>(message), bytes);
+  wait_here(registration, State::writer_waiting, me, const_cast<void*>(message), bytes);
   if (alt_ != nullptr) {
     alt_->guard_ready();
   }
-  node.kernel().block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
+  kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
 }
 
-void ChanBase::input(void* message, std::size_t bytes, CopyFn copy) {
-  auto [me, node] = here();
-  node.compute_cycles(channel_cycles(node, Instruction::in, external() ? 0 : words(bytes)));
-  if (external()) {
+void ChanBase::input(void* message, std::size_t bytes, CopyFn copy, Registration& registration) {
+  auto [kernel, me, node] = here();
+  kernel.consume(charge(input_charge_, node, Instruction::in, bytes));
+  if (external()) [[unlikely]] {
     input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
     return;
   }
@@ -143,12 +143,11 @@ void ChanBase::input(void* message, std::size_t bytes, CopyFn copy) {
     Process* writer = std::exchange(waiter_, nullptr);
     registration_ = nullptr;
     state_ = State::empty;
-    node.kernel().wake(*writer);
+    kernel.wake(*writer);
     return;
   }
-  Registration registration(*this);
-  registration.wait(State::reader_waiting, me, message, bytes);
-  node.kernel().block(emulator::WaitInfo{emulator::WaitKind::channel_input, this});
+  wait_here(registration, State::reader_waiting, me, message, bytes);
+  kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_input, this});
 }
 
 bool ChanBase::ready_for_input() const {

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -21,24 +23,64 @@ using emulator::Node;
 using emulator::Priority;
 using emulator::Process;
 
+/// The started branches of a PAR that are still running, oldest first. A PAR knows how many
+/// it starts; up to a few the list lives on the parent's stack, so that a PAR in a loop costs
+/// no trip to the heap.
+class RunningBranches {
+public:
+  explicit RunningBranches(std::size_t capacity) {
+    if (capacity > inline_.size()) {
+      heap_ = std::make_unique<Process*[]>(capacity);
+      data_ = heap_.get();
+    }
+    capacity_ = capacity;
+  }
+  RunningBranches(const RunningBranches&) = delete;
+  RunningBranches& operator=(const RunningBranches&) = delete;
+
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  void push_back(Process* p) {
+    if (size_ == capacity_) {
+      throw std::logic_error("PAR started more branches than it announced");
+    }
+    data_[size_++] = p;
+  }
+  Process* pop_back() { return data_[--size_]; }
+  void erase(const Process* p) {
+    Process** end = data_ + size_;
+    Process** at = std::find(data_, end, p);
+    if (at != end) {
+      std::copy(at + 1, end, at);
+      --size_;
+    }
+  }
+
+private:
+  std::array<Process*, 8> inline_{};
+  std::unique_ptr<Process*[]> heap_;
+  Process** data_ = inline_.data();
+  std::size_t size_ = 0;
+  std::size_t capacity_ = 0;
+};
+
 /// The parent's end of a PAR: counts running branches, wakes the parent after the last one.
 class Join : public emulator::ExitHook, public emulator::WaitTarget {
 public:
-  Join(Kernel& kernel, Process& parent) : kernel_(kernel), parent_(parent) {}
+  Join(Kernel& kernel, Process& parent, std::size_t branches)
+      : kernel_(kernel), parent_(parent), children_(branches) {}
   Join(const Join&) = delete;
   Join& operator=(const Join&) = delete;
   ~Join() override {
     // The parent is being killed: its branches go with it (they refer to its stack).
     while (!children_.empty()) {
-      Process* child = children_.back();
-      children_.pop_back();
-      kernel_.kill(*child);
+      kernel_.kill(*children_.pop_back());
     }
   }
 
   void started(Process& child) { children_.push_back(&child); }
   void on_exit(Process& child) override {
-    children_.erase(std::find(children_.begin(), children_.end(), &child));
+    children_.erase(&child);
     // Only a parent waiting at the join may be woken: before that it is running its own
     // branch and may be blocked on something else entirely.
     if (children_.empty() && waiting_) {
@@ -60,7 +102,7 @@ public:
 private:
   Kernel& kernel_;
   Process& parent_;
-  std::vector<Process*> children_;
+  RunningBranches children_;
   bool waiting_ = false;
 };
 
@@ -82,15 +124,14 @@ void start_branch(Node& node, Join& join, const Process& parent, std::size_t ind
   spawn.stack_bytes = options.stack_bytes;
   spawn.workspace_bytes = options.workspace_bytes;
   spawn.exit_hook = &join;
-  // "parent.index", without a formatting library on this path: a PAR in a loop names its
-  // branches every time round.
-  std::string name;
-  name.reserve(parent.name().size() + 4);
-  name.append(parent.name());
-  name.push_back('.');
+  // "parent.index", written in place into a string made at its final length: a PAR in a
+  // loop names its branches every time round.
   std::array<char, 24> digits{};
   const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), index).ptr;
-  name.append(digits.data(), end);
+  const std::string& base = parent.name();
+  std::string name(base.size() + 1 + static_cast<std::size_t>(end - digits.data()), '.');
+  std::copy(base.begin(), base.end(), name.begin());
+  std::copy(digits.data(), end, name.begin() + static_cast<std::ptrdiff_t>(base.size()) + 1);
   Process& child = node.spawn(
       std::move(name),
       [&node, &branch] {
@@ -109,8 +150,8 @@ void par(std::span<const std::function<void()>> branches, const ParOptions& opti
   }
   Process& parent = current_process("PAR");
   Node& node = Node::current();
-  Join join(node.kernel(), parent);
   const std::size_t started = branches.size() - 1;
+  Join join(node.kernel(), parent, started);
   node.execute(Instruction::startp, started);
   for (std::size_t i = 0; i < started; ++i) {
     start_branch(node, join, parent, i, branches[i], parent.priority(), options);
@@ -134,7 +175,7 @@ void pri_par(const std::function<void()>& high, const std::function<void()>& low
              const ParOptions& options) {
   Process& parent = current_process("PRI PAR");
   Node& node = Node::current();
-  Join join(node.kernel(), parent);
+  Join join(node.kernel(), parent, 1);
   node.execute(Instruction::startp);
   start_branch(node, join, parent, 0, high, Priority::high, options);
   low();

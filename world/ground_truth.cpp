@@ -55,7 +55,14 @@ GroundTruthRecorder::GroundTruthRecorder(GroundTruth& truth, const Terrain& terr
                                          const nav::Image<float>* right_depth)
     : truth_(&truth), terrain_(&terrain), mipmap_(&mipmap), right_(&right),
       world_to_level_(level_to_world.inverse()), tolerance_m_(occlusion_tolerance_m),
-      right_depth_(right_depth) {}
+      right_depth_(right_depth) {
+  // The obstacle map covers the height field's area; it may be sampled more coarsely.
+  const nav::Image<std::uint8_t>& map = terrain.obstacles;
+  const HeightField& height = terrain.height;
+  if (!map.empty() && height.nx() >= 2 && height.ny() >= 2)
+    obstacle_scale_.emplace(static_cast<double>(map.width() - 1) / (height.nx() - 1),
+                            static_cast<double>(map.height() - 1) / (height.ny() - 1));
+}
 
 void GroundTruthRecorder::record(int u, int v, const Eigen::Vector3d& hit_world) {
   const Eigen::Vector3d level = world_to_level_ * hit_world;
@@ -82,9 +89,12 @@ GroundTruthRecorder::Sight GroundTruthRecorder::judge_by_right_depth(const Eigen
   if (!right_depth_)
     return Sight::unsure;
   const nav::Image<float>& depth = *right_depth_;
-  const int u = static_cast<int>(std::floor(pixel.x()));
-  const int v = static_cast<int>(std::floor(pixel.y()));
-  if (u < 0 || v < 0 || u + 1 >= depth.width() || v + 1 >= depth.height())
+  if (!(pixel.x() >= 0.0 && pixel.y() >= 0.0))
+    return Sight::unsure;
+  // Truncation is floor here, the coordinates being >= 0.
+  const int u = static_cast<int>(pixel.x());
+  const int v = static_cast<int>(pixel.y());
+  if (u + 1 >= depth.width() || v + 1 >= depth.height())
     return Sight::unsure;
   // The right rays through the four pixel centres around the point's projection.
   const float around[4] = {depth(u, v), depth(u + 1, v), depth(u, v + 1), depth(u + 1, v + 1)};
@@ -118,17 +128,15 @@ bool GroundTruthRecorder::hidden_from_right(const Eigen::Vector3d& hit_world,
 }
 
 bool GroundTruthRecorder::on_obstacle(const Eigen::Vector3d& hit_world) const {
-  // The obstacle map covers the height field's area; it may be sampled more coarsely.
   const nav::Image<std::uint8_t>& map = terrain_->obstacles;
-  const HeightField& height = terrain_->height;
-  if (map.empty() || height.nx() < 2 || height.ny() < 2)
+  if (!obstacle_scale_)
     return false;
+  const HeightField& height = terrain_->height;
   const double gx = (hit_world.x() - height.origin().x()) / height.cell_m();
   const double gy = (hit_world.y() - height.origin().y()) / height.cell_m();
-  const double scale_x = static_cast<double>(map.width() - 1) / (height.nx() - 1);
-  const double scale_y = static_cast<double>(map.height() - 1) / (height.ny() - 1);
-  const int i = static_cast<int>(std::floor(gx * scale_x + 0.5));
-  const int j = static_cast<int>(std::floor(gy * scale_y + 0.5));
+  // Truncation stands in for floor: the two differ only below 0, which the clamp maps to 0.
+  const int i = static_cast<int>(gx * obstacle_scale_->x() + 0.5);
+  const int j = static_cast<int>(gy * obstacle_scale_->y() + 0.5);
   return map(std::clamp(i, 0, map.width() - 1), std::clamp(j, 0, map.height() - 1)) != 0;
 }
 

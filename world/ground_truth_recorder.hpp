@@ -7,6 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include <optional>
+
 namespace marsokhod::world {
 
 /// Fills a GroundTruth pixel by pixel from the points the left camera's centre rays hit.
@@ -35,6 +37,7 @@ private:
   Eigen::Isometry3d world_to_level_;
   double tolerance_m_;
   const nav::Image<float>* right_depth_;
+  std::optional<Eigen::Vector2d> obstacle_scale_; // obstacle-map nodes per height-field node
 };
 
 } // namespace marsokhod::world

@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 namespace marsokhod::world {
 namespace {
@@ -32,7 +33,8 @@ void check_options(const RenderOptions& options) {
 }
 
 std::uint8_t to_grey(double value) {
-  return static_cast<std::uint8_t>(std::clamp(std::floor(value + 0.5), 0.0, 255.0));
+  // Clamped first, the conversion's truncation is floor(value + 0.5).
+  return static_cast<std::uint8_t>(std::clamp(value + 0.5, 0.0, 255.0));
 }
 
 // Grey level, before noise, of what one ray sees.
@@ -132,21 +134,51 @@ nav::Image<std::uint8_t> Renderer::render_eye(const nav::StereoRig& rig, nav::Ey
   GaussianNoise noise(
       substream_seed(options.noise_seed, eye == nav::Eye::left ? kLeftNoise : kRightNoise));
 
-  const std::vector<double> hits =
-      cast_pixel_rays(camera, mipmap_, mipmap_.start_level(camera.centre()));
+  // Rows are cast bottom-up and each is shaded and recorded while the terrain its rays met is
+  // still in the cache; the noise is then added in row-major order, as the stream runs.
+  PixelRayCaster caster(camera, mipmap_, mipmap_.start_level(camera.centre()));
+  const int width = rig.width();
+  std::vector<double> values(static_cast<std::size_t>(width) * rig.height());
+  const double sky_grey = surface.lighting().sky_grey;
+  std::vector<Eigen::Vector3d> points(static_cast<std::size_t>(width));
+  std::vector<double> weights(static_cast<std::size_t>(width));
+  for (int r = 0; r < rig.height(); ++r) {
+    const int v = caster.next_row();
+    double* row_values = values.data() + static_cast<std::size_t>(v) * width;
+    for (int u = 0; u < width; ++u) {
+      const double t = caster.hits()[u];
+      if (!std::isfinite(t))
+        continue;
+      if (depth)
+        (*depth)(u, v) = static_cast<float>(t);
+      if (recorder)
+        recorder->record(u, v, camera.centre() + t * caster.directions()[u]);
+    }
+    if (n > 1) {
+      for (int u = 0; u < width; ++u)
+        row_values[u] = supersample(shader, camera, u, v, n);
+      continue;
+    }
+    // Shading in loops of their own, the texture weights first: with no occlusion ray or
+    // texture lookup between two pixels, the square roots and divisions of one overlap those of
+    // the next.
+    for (int u = 0; u < width; ++u) {
+      const double t = caster.hits()[u];
+      if (!std::isfinite(t))
+        continue;
+      points[u] = camera.centre() + t * caster.directions()[u];
+      weights[u] = sampler.texture_weight(points[u], caster.directions()[u], t);
+    }
+    for (int u = 0; u < width; ++u)
+      row_values[u] =
+          std::isfinite(caster.hits()[u]) ? sampler.grey_with(points[u], weights[u]) : sky_grey;
+  }
   nav::Image<std::uint8_t> image(rig.width(), rig.height());
   for (int v = 0; v < image.height(); ++v) {
     std::uint8_t* row = image.row(v);
-    const double* row_hits = hits.data() + static_cast<std::size_t>(v) * image.width();
+    const double* row_values = values.data() + static_cast<std::size_t>(v) * width;
     for (int u = 0; u < image.width(); ++u) {
-      const Eigen::Vector3d direction = camera.ray(u, v);
-      const std::optional<double> hit =
-          std::isfinite(row_hits[u]) ? std::optional<double>(row_hits[u]) : std::nullopt;
-      if (hit && depth)
-        (*depth)(u, v) = static_cast<float>(*hit);
-      if (hit && recorder)
-        recorder->record(u, v, camera.centre() + *hit * direction);
-      double value = n == 1 ? shader.shade(direction, hit) : supersample(shader, camera, u, v, n);
+      double value = row_values[u];
       if (options.noise_sigma > 0.0)
         value += options.noise_sigma * noise.next();
       row[u] = to_grey(value);

@@ -9,11 +9,7 @@ double GaussianNoise::uniform_signed() {
   return static_cast<double>(engine_() >> 11) * 0x1.0p-52 - 1.0;
 }
 
-double GaussianNoise::next() {
-  if (has_spare_) {
-    has_spare_ = false;
-    return spare_;
-  }
+double GaussianNoise::next_pair() {
   // Marsaglia's polar form of Box-Muller: a point uniform in the unit disc gives two
   // independent deviates without trigonometry.
   double a = 0.0;

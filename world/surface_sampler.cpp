@@ -36,16 +36,19 @@ double SurfaceSampler::grid_radiance(double x, double y) const {
   return lower + fy * (upper - lower);
 }
 
-double SurfaceSampler::grey(const Eigen::Vector3d& point, const Eigen::Vector3d& direction,
-                            double distance) const {
+double SurfaceSampler::texture_weight(const Eigen::Vector3d& point,
+                                      const Eigen::Vector3d& direction, double distance) const {
   if (!filter_)
-    return exposure_ * surface_->radiance(point.x(), point.y());
+    return 1.0;
   // The footprint is pixel_angle * distance across the ray and longer by 1 / cos(incidence)
   // along it; the texture averages over its area.
   const double across = pixel_angle_ * distance;
   const double cosine =
       std::max(kMinCosine, std::abs(direction.dot(height_->normal(point.x(), point.y()))));
-  const double weight = texture_pitch_m_ * std::sqrt(cosine) / across;
+  return texture_pitch_m_ * std::sqrt(cosine) / across;
+}
+
+double SurfaceSampler::grey_with(const Eigen::Vector3d& point, double weight) const {
   if (weight >= 1.0)
     return exposure_ * surface_->radiance(point.x(), point.y());
   const double base = grid_radiance(point.x(), point.y());

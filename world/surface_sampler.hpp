@@ -18,9 +18,19 @@ public:
   SurfaceSampler(const LitSurface& surface, const HeightField& height, double pixel_angle,
                  bool filter_texture);
 
-  /// Grey level (before noise) of the surface point a ray met after `distance` metres.
+  /// Grey level (before noise) of the surface point a ray met after `distance` metres:
+  /// grey_with(point, texture_weight(point, direction, distance)).
   double grey(const Eigen::Vector3d& point, const Eigen::Vector3d& direction,
-              double distance) const;
+              double distance) const {
+    return grey_with(point, texture_weight(point, direction, distance));
+  }
+  /// The two halves of grey(), for a caller who computes the weights of many rays first, so
+  /// that their square roots and divisions overlap: the share of the sub-grid texture's
+  /// contrast the ray's footprint keeps (1 or more: all of it)...
+  double texture_weight(const Eigen::Vector3d& point, const Eigen::Vector3d& direction,
+                        double distance) const;
+  /// ... and the grey level with that share.
+  double grey_with(const Eigen::Vector3d& point, double weight) const;
 
 private:
   double grid_radiance(double x, double y) const;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -31,7 +32,9 @@ double ground_disparity(const StereoRig& rig, int v) {
 // Texture fixed to the ground: a function of the ground point, sampled through the left and
 // the right camera, so both views agree wherever the ground is seen.
 double texture(double forward, double left) {
-  const auto cell = [](double value, double size) { return static_cast<long>(std::floor(value / size)); };
+  const auto cell = [](double value, double size) {
+    return static_cast<long>(std::floor(value / size));
+  };
   std::uint64_t h = static_cast<std::uint64_t>(cell(forward, 0.05) * 73856093L) ^
                     static_cast<std::uint64_t>(cell(left, 0.05) * 19349663L);
   h = (h ^ (h >> 29)) * 0xbf58476d1ce4e5b9ULL;
@@ -128,13 +131,42 @@ TEST(NavigateDisparity, GroundTruthDisparityOfLevelGroundIsTraversable) {
       if (ground_disparity(rig, v) > 0.0)
         disparity(u, v) = static_cast<float>(ground_disparity(rig, v));
   CountingMeter meter;
-  const NavigationResult result = navigate_disparity(disparity, {}, rig, NavigationOptions{}, meter);
+  const NavigationResult result =
+      navigate_disparity(disparity, {}, rig, NavigationOptions{}, meter);
   ASSERT_TRUE(result.found()) << result.reason();
   EXPECT_TRUE(result.stereo.disparity.empty());
   EXPECT_EQ(result.zones.count(Zone::step) + result.zones.count(Zone::slope), 0U);
   EXPECT_EQ(meter.count(Work::match_candidate), 0U);
   EXPECT_GT(meter.count(Work::path_relaxation), 0U);
   EXPECT_EQ(meter.count(Work::range_pixel), result.terrain.known_pixels);
+}
+
+TEST(TexturedPixels, MarksWhereTheFiveByFiveNeighbourhoodSpansTheGreyRange) {
+  // Against the definition written out pixel by pixel (clamped at the borders), on random
+  // images from narrower than the window to wider than a vector.
+  std::mt19937 random(5);
+  for (const int width : {1, 2, 3, 4, 5, 6, 17, 40}) {
+    const int height = 1 + static_cast<int>(random() % 9);
+    Image<std::uint8_t> image(width, height);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        image(x, y) = static_cast<std::uint8_t>(100 + random() % 9);
+    const Image<std::uint8_t> textured = textured_pixels(image, 6);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        int hi = 0;
+        int lo = 255;
+        for (int dy = -2; dy <= 2; ++dy)
+          for (int dx = -2; dx <= 2; ++dx) {
+            const int v =
+                image(std::clamp(x + dx, 0, width - 1), std::clamp(y + dy, 0, height - 1));
+            hi = std::max(hi, v);
+            lo = std::min(lo, v);
+          }
+        ASSERT_EQ(textured(x, y), hi - lo >= 6 ? 255 : 0)
+            << width << "x" << height << " at " << x << "," << y;
+      }
+  }
 }
 
 TEST(RoverMaxDisparity, CoversTheNearestGroundPlusRocks) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -112,6 +113,29 @@ TEST(Channel, KillingAWaitingReaderFreesTheChannel) {
   rig.spawn("reader", [&] { c >> received; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(received, 7);
+}
+
+TEST(Channel, EachSidePaysAtTheSpeedOfTheNodeItRunsOn) {
+  // One channel used by two simulations in turn, on nodes of different speed grades that
+  // may well occupy the same memory: the charge worked out for the first must not carry over.
+  Chan<int> c("c");
+  std::vector<std::uint64_t> serials;
+  for (const Tick cycle : {Tick{33'333}, Tick{50'000}, Tick{33'333}}) {
+    emulator::NodeSpec spec = testing::pc_card_node();
+    spec.cpu.cycle = cycle;
+    emulator::Kernel kernel;
+    emulator::Node node(kernel, spec);
+    serials.push_back(node.serial());
+    int received = 0;
+    node.spawn("writer", [&] { c << 5; });
+    node.spawn("reader", [&] { c >> received; });
+    EXPECT_EQ(kernel.run().reason, StopReason::finished);
+    EXPECT_EQ(received, 5);
+    EXPECT_EQ(kernel.now(), 2 * kOneWordTransfer * cycle);
+  }
+  EXPECT_NE(serials[0], serials[1]);
+  EXPECT_NE(serials[1], serials[2]);
+  EXPECT_NE(serials[0], serials[2]);
 }
 
 TEST(Channel, UseOutsideAProcessIsAnError) {

@@ -182,16 +182,16 @@ TEST(MaxMipmap, NoTwoSurfacePointsDifferMoreThanTheSteepestGradientAllows) {
   double steepest_seen = 0.0;
   for (int n = 0; n < 20000; ++n) {
     const Eigen::Vector2d p(uniform(engine, -1.5, 1.5), uniform(engine, -1.5, 1.5));
-    const Eigen::Vector2d q = p + Eigen::Vector2d(uniform(engine, -0.05, 0.05),
-                                                  uniform(engine, -0.05, 0.05));
+    const Eigen::Vector2d q =
+        p + Eigen::Vector2d(uniform(engine, -0.05, 0.05), uniform(engine, -0.05, 0.05));
     if (!field.contains(q.x(), q.y()))
       continue;
-    const double slope = std::abs(field.height(p.x(), p.y()) - field.height(q.x(), q.y())) /
-                         (p - q).norm();
+    const double slope =
+        std::abs(field.height(p.x(), p.y()) - field.height(q.x(), q.y())) / (p - q).norm();
     EXPECT_LE(slope, lipschitz * (1.0 + 1e-9)) << n;
     steepest_seen = std::max(steepest_seen, slope);
   }
-  // The bound is at most sqrt(2) times the true constant (bilinear cells, see max_mipmap.cpp).
+  // The bound is at most sqrt(2) times the true constant (bilinear cells, see slope_levels.cpp).
   EXPECT_GT(steepest_seen, lipschitz / std::sqrt(2.0) * 0.8);
 }
 
@@ -216,6 +216,74 @@ TEST(MaxMipmap, FirstHitBeyondAStartBeforeTheHitFindsTheSameHit) {
     ++compared;
   }
   EXPECT_GT(compared, 100);
+}
+
+// The bumpy field with a 0.3 m block on it: steep at the block's sides, gentle elsewhere.
+HeightField field_with_a_block() {
+  HeightField field = bumpy_field();
+  for (int j = 90; j <= 100; ++j)
+    for (int i = 30; i <= 45; ++i)
+      field.at(i, j) += 0.3F;
+  return field;
+}
+
+TEST(MaxMipmap, BlockSlopeBoundsHoldForSegmentsUpToACellFromTheBlock) {
+  const HeightField field = field_with_a_block();
+  const MaxMipmap mipmap(field);
+  std::mt19937_64 engine(13);
+  const double cell = field.cell_m();
+  int gentler = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const int level = MaxMipmap::kSlopeLevel + static_cast<int>(engine() % 3);
+    const int bx = static_cast<int>(engine() % mipmap.blocks_x(level));
+    const int by = static_cast<int>(engine() % mipmap.blocks_y(level));
+    const double side = cell * (1 << level);
+    const Eigen::Vector2d p =
+        field.origin() +
+        Eigen::Vector2d(bx + uniform(engine, 0, 1), by + uniform(engine, 0, 1)) * side;
+    const double angle = uniform(engine, 0.0, 2.0 * std::numbers::pi);
+    const Eigen::Vector2d q =
+        p + uniform(engine, 0.0, cell) * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    if (!field.contains(p.x(), p.y()) || !field.contains(q.x(), q.y()) || (p - q).norm() == 0.0)
+      continue;
+    const double slope =
+        std::abs(field.height(p.x(), p.y()) - field.height(q.x(), q.y())) / (p - q).norm();
+    const double bound = mipmap.steepest_gradient_near(level, bx, by);
+    EXPECT_LE(slope, bound * (1.0 + 1e-9)) << n;
+    EXPECT_LE(bound, static_cast<float>(mipmap.steepest_gradient()));
+    if (bound < mipmap.steepest_gradient() / 4.0)
+      ++gentler;
+  }
+  // Away from the block the local bounds are far below the whole surface's.
+  EXPECT_GT(gentler, 10000);
+}
+
+// Any `gentle` is a true premise for a start short of the hit (the ray meets nothing before
+// it at all), so the walk must find the same hit whichever blocks it skips unseen.
+TEST(MaxMipmap, FirstHitBeyondGentleFindsTheSameHit) {
+  const HeightField field = field_with_a_block();
+  const MaxMipmap mipmap(field);
+  std::mt19937_64 engine(17);
+  int compared = 0;
+  for (int n = 0; n < 600; ++n) {
+    const Eigen::Vector3d origin(uniform(engine, -1.4, 1.4), uniform(engine, -1.4, 1.4),
+                                 uniform(engine, 0.5, 1.2));
+    const double azimuth = uniform(engine, 0.0, 2.0 * std::numbers::pi);
+    const double dip = uniform(engine, 0.03, 0.9);
+    const Eigen::Vector3d direction(std::cos(dip) * std::cos(azimuth),
+                                    std::cos(dip) * std::sin(azimuth), -std::sin(dip));
+    const auto full = mipmap.first_hit(origin, direction);
+    if (!full)
+      continue;
+    const double gentle = n % 4 == 0 ? std::numeric_limits<double>::infinity()
+                                     : uniform(engine, 0.0, mipmap.steepest_gradient());
+    const auto got = mipmap.first_hit_beyond_gentle(
+        origin, direction, *full * uniform(engine, 0, 1), gentle, mipmap.start_level(origin));
+    ASSERT_TRUE(got.has_value()) << n;
+    EXPECT_NEAR(*got, *full, 1e-9) << n;
+    ++compared;
+  }
+  EXPECT_GT(compared, 200);
 }
 
 } // namespace

@@ -73,6 +73,7 @@ private:
   std::uint64_t dispatch_event_ = 0; // pending dispatch, 0 = none
   bool preempt_requested_ = false;   // a high process is ready; the running low one yields
   Tick next_tick_ = 0;               // first timeslice tick after the last grant
+  Tick slice_end_ = 0;               // slice end of a low process granted before next_tick_
   Tick busy_since_ = 0;
   Tick busy_total_ = 0;
   TrackId track_ = 0;
@@ -109,11 +110,12 @@ inline Process* Cpu::pop() {
     if (p == nullptr) {
       continue;
     }
+    // p->next_ready_ keeps its stale value: it is read only while p is queued, and every
+    // push sets it.
     q.head = p->next_ready_;
     if (q.head == nullptr) {
       q.tail = nullptr;
     }
-    p->next_ready_ = nullptr;
     --ready_count_;
     return p;
   }

@@ -40,10 +40,12 @@
 #include "marsokhod/emulator/time.hpp"
 #include "marsokhod/emulator/trace_sink.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -153,9 +155,7 @@ public:
     // Fast path: nothing can happen before the chunk ends (no event, no deadline, no
     // preemption or timeslice due), so the clock just moves on; this is exactly what the
     // event queue would do, without its cost.
-    const Process* p = current_;
-    if (p != nullptr && duration >= 0 && now_ + duration < horizon_ && now_ < p->slice_end_ &&
-        !p->cpu_->preempt_requested_) {
+    if (duration >= 0 && now_ + duration < fast_until_) {
       now_ += duration;
       return;
     }
@@ -167,7 +167,21 @@ public:
   /// As block(), but also woken at `deadline`; true if the deadline woke it.
   bool block_until(Tick deadline, WaitInfo why);
   /// Makes a blocked process ready; does nothing if it is not blocked.
-  void wake(Process& process);
+  void wake(Process& process) {
+    if (process.state_ != ProcessState::blocked) {
+      return;
+    }
+    // Fast path, the usual end of a channel communication: a low-priority process with no
+    // deadline, woken while its CPU is busy, only joins the back of its ready queue.
+    Cpu& cpu = *process.cpu_;
+    if (process.timeout_event_ == 0 && process.priority_ == Priority::low &&
+        cpu.running_ != nullptr) {
+      process.state_ = ProcessState::ready;
+      cpu.push_back(process);
+      return;
+    }
+    wake_slowly(process);
+  }
   /// Puts the current process behind the other ready processes of its priority.
   void yield();
   /// Ends a process that is not the current one; its stack unwinds, destructors run.
@@ -196,13 +210,27 @@ private:
   friend class Cpu;
 
   void consume_slowly(Tick duration);
+  void wake_slowly(Process& process);
   void refresh_horizon();
+  /// Recomputes fast_until_; due whenever current_, horizon_, the current process's slice end
+  /// or its CPU's preemption request change.
+  void refresh_fast_until() {
+    const Process* p = current_;
+    fast_until_ = p != nullptr && !p->cpu_->preempt_requested_ ? std::min(horizon_, p->slice_end_)
+                                                               : kNoFastPath;
+  }
+
+  static constexpr Tick kNoFastPath = std::numeric_limits<Tick>::min();
 
   static inline thread_local Kernel* active_ = nullptr;
   Tick now_ = 0;
   /// A lower bound of min(next event time, run limit + 1): chunks ending before it need no
   /// look at the event queue.
   Tick horizon_ = 0;
+  /// min(horizon_, the current process's slice end), or kNoFastPath when no process runs or a
+  /// preemption is pending: a chunk that ends before it only moves the clock. One comparison
+  /// for what would otherwise be four; refresh_fast_until() keeps it true.
+  Tick fast_until_ = kNoFastPath;
   Process* current_ = nullptr;
   TraceSink* trace_ = nullptr;
   std::size_t live_ = 0;

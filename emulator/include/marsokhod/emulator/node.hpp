@@ -43,6 +43,9 @@ public:
   const NodeSpec& spec() const { return spec_; }
   const CpuSpec& cpu_spec() const { return spec_.cpu; }
   Kernel& kernel() const { return *kernel_; }
+  /// Unique among all nodes created by this program (never 0, never reused, unlike an
+  /// address): a key for values derived from the node's spec and cached elsewhere.
+  std::uint64_t serial() const { return serial_; }
   Cpu& cpu() { return *cpu_; }
   MemoryArena& memory() { return *memory_; }
 
@@ -97,6 +100,7 @@ private:
   };
 
   Kernel* kernel_;
+  std::uint64_t serial_;
   NodeSpec spec_;
   std::unique_ptr<Cpu> cpu_;
   std::unique_ptr<MemoryArena> memory_;

@@ -73,7 +73,8 @@ struct SpawnOptions {
 
 namespace detail {
 struct Context;
-}
+class ProcessRegistry;
+} // namespace detail
 
 /// A simulated process: a host fiber that runs on one CPU. Created by Kernel::spawn, owned by
 /// the kernel, destroyed after it finishes; a Process& is valid until its body returns.
@@ -96,27 +97,29 @@ public:
 private:
   friend class Kernel;
   friend class Cpu;
-  Process(Cpu& cpu, std::string name, std::uint64_t id, Priority priority);
+  friend class detail::ProcessRegistry;
+  Process(Cpu& cpu, std::string&& name, std::uint64_t id, Priority priority);
 
-  std::string name_;
+  // What every switch and wake-up touches comes first, to share cache lines.
   Cpu* cpu_;
-  std::uint64_t id_;
-  Priority priority_;
-  ProcessState state_ = ProcessState::ready;
+  std::unique_ptr<detail::Context> context_;
+  Process* next_ready_ = nullptr;   // intrusive ready queue of the CPU
+  Tick slice_end_ = kNever;         // low priority: descheduled at a chunk boundary from then on
+  std::uint64_t timeout_event_ = 0; // pending deadline of block_until, 0 = none
   WaitInfo wait_{};
   Tick blocked_since_ = 0;
+  Priority priority_;
+  ProcessState state_ = ProcessState::ready;
+  bool timed_out_ = false;
+  std::uint64_t id_;
+  std::string name_;
   ExitHook* exit_hook_ = nullptr;
   std::function<void()> body_;
-  std::unique_ptr<detail::Context> context_;
-  Process* next_ready_ = nullptr; // intrusive ready queue of the CPU
-  Process* older_ = nullptr;      // the kernel's list of processes, in creation order
+  Process* older_ = nullptr; // the kernel's list of processes, in creation order
   Process* newer_ = nullptr;
-  std::uint64_t timeout_event_ = 0; // pending deadline of block_until, 0 = none
-  bool timed_out_ = false;
   Tick compute_left_ = 0;           // remaining consume() time after a preemption
   std::uint64_t compute_event_ = 0; // pending end of consume(), 0 = none
   Tick compute_end_ = 0;
-  Tick slice_end_ = kNever; // low priority: descheduled at a chunk boundary from then on
 };
 
 } // namespace marsokhod::emulator

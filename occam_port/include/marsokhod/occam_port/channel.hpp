@@ -1,15 +1,18 @@
 #pragma once
 
+#include "marsokhod/emulator/cost_table.hpp"
 #include "marsokhod/emulator/kernel.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <type_traits>
 
 namespace marsokhod::emulator {
 class LinkPort;
-}
+class Node;
+} // namespace marsokhod::emulator
 
 namespace marsokhod::occam_port {
 
@@ -40,9 +43,15 @@ public:
   bool ready_for_input() const;
 
   /// `c ! message`: `bytes` is the message length the transputer would move.
-  void output(const void* message, std::size_t bytes, CopyFn copy);
+  void output(const void* message, std::size_t bytes, CopyFn copy) {
+    Registration registration;
+    output(message, bytes, copy, registration);
+  }
   /// `c ? message`.
-  void input(void* message, std::size_t bytes, CopyFn copy);
+  void input(void* message, std::size_t bytes, CopyFn copy) {
+    Registration registration;
+    input(message, bytes, copy, registration);
+  }
 
   // ALT support (enbc/disc): ready means an outputter is committed to this channel.
   bool enable(AltState& alt);
@@ -56,10 +65,50 @@ protected:
 
 private:
   enum class State : unsigned char { empty, reader_waiting, writer_waiting };
-  class Registration;
+
+  /// Withdraws a waiting side from the channel if its process is killed while it waits, so
+  /// the channel never points into a stack that is gone; and forgets the channel if the
+  /// channel goes first (one declared outside the processes, destroyed before the kernel).
+  class Registration {
+  public:
+    Registration() = default;
+    Registration(const Registration&) = delete;
+    Registration& operator=(const Registration&) = delete;
+    ~Registration() {
+      if (channel_ != nullptr && channel_->registration_ == this) {
+        channel_->withdraw();
+      }
+    }
+
+  private:
+    friend class ChanBase;
+    ChanBase* channel_ = nullptr; ///< set once the side waits
+  };
+
+  // The channel operations proper. The registration of a side that waits lives in the
+  // caller's frame, so that these can end with a jump into Kernel::block (a tail call)
+  // instead of a call: after the switch back the process returns straight into its own code,
+  // one return fewer, and each return after a switch is one the processor may mispredict.
+  void output(const void* message, std::size_t bytes, CopyFn copy, Registration& registration);
+  void input(void* message, std::size_t bytes, CopyFn copy, Registration& registration);
+  void wait_here(Registration& registration, State state, emulator::Process& me, void* data,
+                 std::size_t bytes);
+  void withdraw() {
+    state_ = State::empty;
+    waiter_ = nullptr;
+    data_ = nullptr;
+    registration_ = nullptr;
+  }
+  /// What one side pays per message, worked out once per node and message length.
+  struct Charge {
+    std::uint64_t node = 0; ///< Node::serial(); 0: nothing worked out yet
+    std::size_t bytes = 0;
+    emulator::Tick time = 0;
+  };
+  emulator::Tick charge(Charge& cached, const emulator::Node& node, emulator::Instruction op,
+                        std::size_t bytes) const;
   void copy_message(void* destination, const void* source, CopyFn copy) const;
 
-  std::string name_;
   State state_ = State::empty;
   emulator::Process* waiter_ = nullptr;
   void* data_ = nullptr; // the waiting side's message
@@ -68,6 +117,9 @@ private:
   Registration* registration_ = nullptr; // the waiting side's, on its stack
   emulator::LinkPort* output_port_ = nullptr;
   emulator::LinkPort* input_port_ = nullptr;
+  Charge output_charge_;
+  Charge input_charge_;
+  std::string name_;
 };
 
 /// Bytes a value occupies on a channel (the length the transputer's in/out would copy).

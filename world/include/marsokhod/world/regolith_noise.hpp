@@ -36,11 +36,18 @@ void add_fractal_noise(nav::Image<float>& field, const GridFrame& frame,
 /// Adds independent uniform noise in [-amplitude, amplitude) to every node.
 void add_white_noise(nav::Image<float>& field, double amplitude, std::uint64_t seed);
 
+/// std::floor, with a shortcut for the non-negative coordinates of grid points (truncation).
+inline double lattice_floor(double u) {
+  if (u >= 0.0 && u < 0x1p52)
+    return static_cast<double>(static_cast<std::int64_t>(u));
+  return std::floor(u);
+}
+
 /// Point-evaluable value noise in [-1, 1): bilinear between lattice values at integer (u, v).
 /// Cheap (four hashes), for texture finer than any stored grid.
 inline float lattice_noise(std::uint64_t seed, double u, double v) {
-  const double fu = std::floor(u);
-  const double fv = std::floor(v);
+  const double fu = lattice_floor(u);
+  const double fv = lattice_floor(v);
   const auto iu = static_cast<std::int64_t>(fu);
   const auto iv = static_cast<std::int64_t>(fv);
   const auto tu = static_cast<float>(u - fu);

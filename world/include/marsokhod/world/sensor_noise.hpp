@@ -13,9 +13,16 @@ public:
   explicit GaussianNoise(std::uint64_t seed) : engine_(seed) {}
 
   /// The next deviate (mean 0, standard deviation 1).
-  double next();
+  double next() {
+    if (has_spare_) {
+      has_spare_ = false;
+      return spare_;
+    }
+    return next_pair();
+  }
 
 private:
+  double next_pair();      // draws two, keeps the second as the spare
   double uniform_signed(); // in [-1, 1)
 
   std::mt19937_64 engine_;
