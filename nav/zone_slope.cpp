@@ -56,19 +56,23 @@ private:
     tests += 6;
     const float* low = centre + from * step;
     const float* high = centre + to * step;
+    const std::ptrdiff_t side = d_ * across;
     double rise = 0.0;
     int pairs = 0;
-    for (const std::ptrdiff_t offset : {-d_ * across, std::ptrdiff_t{0}, d_ * across}) {
-      const float l = low[offset];
-      const float h = high[offset];
-      if (std::isnan(l) || std::isnan(h))
-        continue;
-      rise += h - l;
-      ++pairs;
-    }
+    take_pair(low[-side], high[-side], rise, pairs);
+    take_pair(low[0], high[0], rise, pairs);
+    take_pair(low[side], high[side], rise, pairs);
     if (pairs == 0)
       return 0.0;
     return rise / pairs / ((to - from) * grid_.cell());
+  }
+
+  // Adds the rise of a pair of samples when both are present, without a branch. A sum that
+  // starts at +0 is never -0, so adding +0 for a missing pair leaves it as it was.
+  static void take_pair(float low, float high, double& rise, int& pairs) {
+    const bool present = !std::isnan(low) & !std::isnan(high);
+    rise += present ? static_cast<double>(high - low) : 0.0;
+    pairs += present ? 1 : 0;
   }
 
   const GroundGrid& grid_;
