@@ -47,6 +47,7 @@ public:
                : kNoHeight;
   }
   int count(int i) const { return count_[static_cast<std::size_t>(i)]; }
+  const std::pmr::vector<std::int32_t>& counts() const { return count_; } ///< count() of each cell
 
   static constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();
 

@@ -82,6 +82,10 @@ inline bool is_step(float highest, float lowest, float own, float limit) {
   return (highest - own > limit) || (own - lowest > limit);
 }
 
+/// Non-zero for the non-empty cells holding a step: their lowest or highest point is one.
+CellFlags step_cells(const GroundGrid& grid, const StepWindow& window, float limit,
+                     std::pmr::memory_resource* memory);
+
 /// Non-zero for the non-empty cells whose fitted plane is steeper than max_slope_deg. `tests`
 /// counts the cell means read.
 CellFlags steep_cells(const GroundGrid& grid, const ZoneOptions& options,
@@ -105,6 +109,7 @@ std::uint64_t grow_margin(const GroundGrid& grid, const ZoneOptions& options,
 /// What find_zones makes of a cell's traversable pixels, besides their own step test.
 struct CellRules {
   StepWindow window;
+  CellFlags step;
   CellFlags steep;
   CellFlags near;
 };

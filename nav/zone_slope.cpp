@@ -90,11 +90,16 @@ CellFlags steep_cells(const GroundGrid& grid, const ZoneOptions& options,
     return steep;
   const double limit = std::tan(options.max_slope_deg * std::numbers::pi / 180.0);
   const PlaneFit fit(grid, cells_within(grid, 0.5 * options.slope_baseline_m), memory);
+  // In locals: a byte store may alias anything, and would make every member be read again.
+  const double squared_limit = limit * limit;
+  const std::int32_t* count = grid.counts().data();
+  std::uint8_t* out = steep.data();
+  const int nx = grid.nx();
   for (int iy = 0; iy < grid.ny(); ++iy)
-    for (int ix = 0; ix < grid.nx(); ++ix) {
-      const int i = grid.index(ix, iy);
-      steep[static_cast<std::size_t>(i)] =
-          grid.count(i) > 0 && fit.squared_gradient(ix, iy, tests) > limit * limit ? 1 : 0;
+    for (int ix = 0; ix < nx; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(iy) * static_cast<std::size_t>(nx) +
+                            static_cast<std::size_t>(ix);
+      out[i] = count[i] > 0 && fit.squared_gradient(ix, iy, tests) > squared_limit ? 1 : 0;
     }
   return steep;
 }

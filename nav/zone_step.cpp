@@ -85,4 +85,24 @@ StepWindow step_window(const GroundGrid& grid, const ZoneOptions& options,
                          comparisons);
 }
 
+CellFlags step_cells(const GroundGrid& grid, const StepWindow& window, float limit,
+                     std::pmr::memory_resource* memory) {
+  const std::size_t cells = window.highest.size();
+  CellFlags step(cells, memory);
+  const float* high = window.highest.data();
+  const float* low = window.lowest.data();
+  const float* own_high = grid.highest().data();
+  const float* own_low = grid.lowest().data();
+  const std::int32_t* count = grid.counts().data();
+  std::uint8_t* out = step.data();
+  // Branch-free (& and | rather than && and ||), so that the loop vectorises. An empty cell's
+  // own extremes (-inf highest, +inf lowest) would read as steps: its count rules it out.
+  for (std::size_t i = 0; i < cells; ++i) {
+    const bool at_low = (high[i] - own_low[i] > limit) | (own_low[i] - low[i] > limit);
+    const bool at_high = (high[i] - own_high[i] > limit) | (own_high[i] - low[i] > limit);
+    out[i] = (count[i] > 0) & (at_low | at_high) ? 1 : 0;
+  }
+  return step;
+}
+
 } // namespace marsokhod::nav::detail

@@ -9,15 +9,12 @@ constexpr std::uint8_t kMixed = 0xFF;
 // The verdict of a cell's pixels where the cell decides it: no point of the cell is a step when
 // neither its lowest nor its highest point is one (the tests only grow away from the window),
 // and then its pixels are all slopes, margins or traversable alike.
-ScratchBuffer<std::uint8_t> cell_verdicts(const GroundGrid& grid, const CellRules& rules,
-                                          float step_limit, std::pmr::memory_resource* memory) {
+ScratchBuffer<std::uint8_t> cell_verdicts(const CellRules& rules,
+                                          std::pmr::memory_resource* memory) {
   const std::size_t cells = rules.steep.size();
   ScratchBuffer<std::uint8_t> verdicts(cells, memory);
   for (std::size_t i = 0; i < cells; ++i) {
-    const float high = rules.window.highest[i];
-    const float low = rules.window.lowest[i];
-    if (is_step(high, low, grid.lowest()[i], step_limit) ||
-        is_step(high, low, grid.highest()[i], step_limit)) {
+    if (rules.step[i] != 0) {
       verdicts[i] = kMixed;
       continue;
     }
@@ -34,11 +31,17 @@ ScratchBuffer<std::uint8_t> cell_verdicts(const GroundGrid& grid, const CellRule
 std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainPoints& terrain,
                            const CellRules& rules, float step_limit, Image<std::uint8_t>& zone,
                            std::pmr::memory_resource* memory) {
-  const ScratchBuffer<std::uint8_t> verdicts = cell_verdicts(grid, rules, step_limit, memory);
+  const ScratchBuffer<std::uint8_t> verdicts = cell_verdicts(rules, memory);
   const auto step = static_cast<std::uint8_t>(Zone::step);
   const auto slope = static_cast<std::uint8_t>(Zone::slope);
   const auto margin = static_cast<std::uint8_t>(Zone::margin);
   const auto traversable = static_cast<std::uint8_t>(Zone::traversable);
+  // In locals: a byte store may alias anything, and would make every member be read again.
+  const std::uint8_t* verdict = verdicts.data();
+  const float* highest = rules.window.highest.data();
+  const float* lowest = rules.window.lowest.data();
+  const std::uint8_t* steep = rules.steep.data();
+  const std::uint8_t* near = rules.near.data();
   const int width = zone.width();
   std::uint64_t judged = 0;
   for (int y = 0; y < zone.height(); ++y) {
@@ -50,15 +53,14 @@ std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainPoints& terrain,
         return;
       ++judged;
       const auto i = static_cast<std::size_t>(cells[x]);
-      if (verdicts[i] != kMixed) {
-        row[x] = verdicts[i];
+      if (verdict[i] != kMixed) {
+        row[x] = verdict[i];
         return;
       }
-      row[x] = is_step(rules.window.highest[i], rules.window.lowest[i], elevation[x], step_limit)
-                   ? step
-               : rules.steep[i] != 0 ? slope
-               : rules.near[i] != 0  ? margin
-                                     : traversable;
+      row[x] = is_step(highest[i], lowest[i], elevation[x], step_limit) ? step
+               : steep[i] != 0                                          ? slope
+               : near[i] != 0                                           ? margin
+                                                                        : traversable;
     };
     int x = 0;
     // Pixels that were not binned come in runs (the sky, the strip only the left camera sees):

@@ -25,21 +25,13 @@ void check_sizes(const TerrainPoints& terrain, int width, int height, const char
                                             height, terrain.width(), terrain.height()));
 }
 
-// Obstacle cells: steep ones, and those whose lowest or highest point is a step.
-detail::CellFlags obstacle_cells(const detail::GroundGrid& grid, const detail::CellRules& rules,
-                                 float step_limit, std::pmr::memory_resource* memory) {
-  detail::CellFlags obstacle(rules.steep.size(), memory);
-  for (std::size_t i = 0; i < obstacle.size(); ++i) {
-    if (grid.count(static_cast<int>(i)) == 0) {
-      obstacle[i] = 0;
-      continue;
-    }
-    const float high = rules.window.highest[i];
-    const float low = rules.window.lowest[i];
-    const bool step = detail::is_step(high, low, grid.lowest()[i], step_limit) ||
-                      detail::is_step(high, low, grid.highest()[i], step_limit);
-    obstacle[i] = step || rules.steep[i] != 0 ? 1 : 0;
-  }
+// Obstacle cells: those holding a step or steep.
+detail::CellFlags obstacle_cells(const detail::CellRules& rules,
+                                 std::pmr::memory_resource* memory) {
+  const std::size_t cells = rules.steep.size();
+  detail::CellFlags obstacle(cells, memory);
+  for (std::size_t i = 0; i < cells; ++i)
+    obstacle[i] = rules.step[i] | rules.steep[i];
   return obstacle;
 }
 
@@ -52,11 +44,11 @@ std::uint64_t mark_hazards(const TerrainPoints& terrain, const ZoneOptions& opti
     return 0;
   std::uint64_t work = 0;
   const auto step_limit = static_cast<float>(options.max_step_m);
-  detail::CellRules rules{detail::step_window(grid, options, memory, work),
-                          detail::steep_cells(grid, options, memory, work),
-                          detail::CellFlags(memory)};
-  rules.near = detail::near_cells(grid, obstacle_cells(grid, rules, step_limit, memory), options,
-                                  memory, work);
+  detail::CellRules rules{
+      detail::step_window(grid, options, memory, work), detail::CellFlags(memory),
+      detail::steep_cells(grid, options, memory, work), detail::CellFlags(memory)};
+  rules.step = detail::step_cells(grid, rules.window, step_limit, memory);
+  rules.near = detail::near_cells(grid, obstacle_cells(rules, memory), options, memory, work);
   return work + detail::judge_pixels(grid, terrain, rules, step_limit, zone, memory);
 }
 
