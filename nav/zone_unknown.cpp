@@ -32,15 +32,17 @@ void mark_seen(const float* elevation, const float* range, float max_range, int 
   }
 }
 
-// Seen pixels the left-right check rejected; returns whether there were any. The mask's
-// channel 0 is read `channels` bytes apart: a mask of one channel gets a loop of its own, which
-// vectorises.
-bool hold_back_unreliable(const std::uint8_t* reliable, std::ptrdiff_t channels, int width,
-                          std::uint8_t* out) {
+// Seen pixels the left-right check rejected; returns whether there were any. Bridging judges
+// only points within range, which a NaN range is not: such a pixel is unknown outright. The
+// mask's channel 0 is read `channels` bytes apart: a mask of one channel gets a loop of its own,
+// which vectorises.
+bool hold_back_unreliable(const std::uint8_t* reliable, std::ptrdiff_t channels, const float* range,
+                          int width, std::uint8_t* out) {
   std::uint8_t any = 0;
   const auto hold = [&](int x, std::uint8_t reliable_byte) {
-    const bool held = (out[x] == kTraversable) & (reliable_byte == 0);
-    out[x] = held ? kUnreliable : out[x];
+    const bool rejected = (out[x] == kTraversable) & (reliable_byte == 0);
+    const bool held = rejected & !std::isnan(range[x]);
+    out[x] = held ? kUnreliable : rejected ? kUnknown : out[x];
     any |= held ? 1 : 0;
   };
   if (channels == 1)
@@ -63,8 +65,8 @@ bool mark_unknown(const TerrainPoints& terrain, ImageView<const std::uint8_t> re
     std::uint8_t* out = zone.row(y);
     mark_seen(terrain.elevation.row(y), terrain.range.row(y), max_range, terrain.width(), out);
     if (use_reliable)
-      any_unreliable |=
-          hold_back_unreliable(reliable.row(y), reliable.channels(), terrain.width(), out);
+      any_unreliable |= hold_back_unreliable(reliable.row(y), reliable.channels(),
+                                             terrain.range.row(y), terrain.width(), out);
   }
   return any_unreliable;
 }

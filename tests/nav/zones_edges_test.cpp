@@ -75,5 +75,17 @@ TEST(FindZonesEdges, HeldBackPixelsAreSettledAndCounted) {
   EXPECT_EQ(zones.counts, counts);
 }
 
+TEST(FindZonesEdges, UnreliablePixelWithoutRangeIsNotBridged) {
+  const GridSpec g;
+  TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
+  Image<std::uint8_t> reliable(g.width, g.height, 1, 255);
+  reliable(20, 30) = 0;
+  reliable(21, 30) = 0;
+  t.range(21, 30) = std::numeric_limits<float>::quiet_NaN(); // not within range, so not bridged
+  const ZoneMap zones = find_zones(t, reliable, grid_options());
+  EXPECT_EQ(zones.at(20, 30), Zone::unknown);
+  EXPECT_EQ(zones.at(21, 30), Zone::unknown);
+}
+
 } // namespace
 } // namespace marsokhod::nav
