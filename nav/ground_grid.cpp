@@ -1,6 +1,11 @@
 #include "ground_grid.hpp"
 
+#include "simd_lanes.hpp"
+#include "zone_bounds.hpp"
+#include "zone_lattice.hpp"
+
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -9,88 +14,115 @@ namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-struct Bounds {
-  float min_x = std::numeric_limits<float>::infinity();
-  float max_x = -std::numeric_limits<float>::infinity();
-  float min_y = std::numeric_limits<float>::infinity();
-  float max_y = -std::numeric_limits<float>::infinity();
-  bool empty() const { return min_x > max_x; }
-};
-
-// A pixel is binned when it is included, known and within range (NaN ranges fail the test).
-bool binned(std::uint8_t included, float elevation, float range, float max_range) {
-  return included != 0 && std::isfinite(elevation) && range <= max_range;
+// Channel 0 of a zone map: find_zones' own map already is one.
+Image<std::uint8_t> first_channel(ImageView<const std::uint8_t> zone,
+                                  std::pmr::memory_resource* memory) {
+  Image<std::uint8_t> out(zone.width(), zone.height(), 1, 0, memory);
+  for (int y = 0; y < zone.height(); ++y)
+    for (int x = 0; x < zone.width(); ++x)
+      out(x, y) = zone(x, y);
+  return out;
 }
 
-Bounds bounds_of(const TerrainPoints& terrain, ImageView<const std::uint8_t> include,
-                 float max_range) {
-  Bounds b;
-  const std::ptrdiff_t channels = include.channels();
-  for (int y = 0; y < terrain.height(); ++y) {
-    const float* forward = terrain.forward.row(y);
-    const float* left = terrain.left.row(y);
-    const float* elevation = terrain.elevation.row(y);
-    const float* range = terrain.range.row(y);
-    const std::uint8_t* included = include.row(y);
-    for (int x = 0; x < terrain.width(); ++x) {
-      if (!binned(included[x * channels], elevation[x], range[x], max_range))
-        continue;
-      b.min_x = std::min(b.min_x, forward[x]);
-      b.max_x = std::max(b.max_x, forward[x]);
-      b.min_y = std::min(b.min_y, left[x]);
-      b.max_y = std::max(b.max_y, left[x]);
+// The cells' statistics, held in locals so that the stores to them are not read as stores to
+// the grid's own members.
+struct CellSums {
+  float* highest;
+  float* lowest;
+  float* sum;
+  std::int32_t* count;
+
+  void add(std::int32_t cell, float h) const {
+    const auto i = static_cast<std::size_t>(cell);
+    highest[i] = std::max(highest[i], h);
+    lowest[i] = std::min(lowest[i], h);
+    sum[i] += h;
+    ++count[i];
+  }
+};
+
+// Bins the pixels of a row marked kBinned, in order (a cell's sum takes its points row by row,
+// left to right), four at a time where SSE2 is there; returns how many. A lane that is not
+// binned is moved to `origin`, a binned point, so that no lane converts an infinity; four pixels
+// none of which is binned are passed over.
+std::uint64_t bin_row(const float* forward, const float* left, const float* elevation,
+                      const LatticeAxis& along, const LatticeAxis& across, const float (&origin)[2],
+                      int width, std::int32_t* cells, const CellSums& sums) {
+  std::uint64_t points = 0;
+  int x = 0;
+#ifdef __SSE2__
+  const LatticeLanes along_lanes(along);
+  const LatticeLanes across_lanes(across);
+  const __m128 origin_x = _mm_set1_ps(origin[0]);
+  const __m128 origin_y = _mm_set1_ps(origin[1]);
+  const __m128i nx = _mm_set1_epi32(along.n);
+  for (; x + kFloatLanes <= width; x += kFloatLanes) {
+    const __m128i in = _mm_cmpeq_epi32(load_lanes<__m128i>(cells + x), _mm_set1_epi32(kBinned));
+    unsigned lanes = static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(in)));
+    if (lanes == 0)
+      continue;
+    const __m128 mask = _mm_castsi128_ps(in);
+    const __m128 px =
+        _mm_or_ps(_mm_and_ps(mask, _mm_loadu_ps(forward + x)), _mm_andnot_ps(mask, origin_x));
+    const __m128 py =
+        _mm_or_ps(_mm_and_ps(mask, _mm_loadu_ps(left + x)), _mm_andnot_ps(mask, origin_y));
+    const __m128i index =
+        _mm_add_epi32(multiply_lanes(across_lanes.cells_of(py), nx), along_lanes.cells_of(px));
+    store_lanes(cells + x, _mm_or_si128(index, _mm_xor_si128(in, _mm_set1_epi32(-1))));
+    for (; lanes != 0; lanes &= lanes - 1, ++points) {
+      const int lane = std::countr_zero(lanes);
+      sums.add(cells[x + lane], elevation[x + lane]);
     }
   }
-  return b;
+#endif
+  for (; x < width; ++x) {
+    if (cells[x] != kBinned)
+      continue;
+    cells[x] = across.cell_of(left[x]) * along.n + along.cell_of(forward[x]);
+    sums.add(cells[x], elevation[x]);
+    ++points;
+  }
+  return points;
 }
 
 } // namespace
 
-GroundGrid::GroundGrid(const TerrainPoints& terrain, ImageView<const std::uint8_t> include,
+GroundGrid::GroundGrid(const TerrainPoints& terrain, ImageView<const std::uint8_t> zone,
                        double cell_m, double max_range_m, std::pmr::memory_resource* memory,
                        std::uint64_t& work)
-    : cell_(cell_m), pixel_cell_(terrain.width(), terrain.height(), 1, -1, memory),
+    : cell_(cell_m), width_(terrain.width()),
+      pixel_cell_(static_cast<std::size_t>(terrain.width()) * terrain.height(), memory),
       highest_(memory), lowest_(memory), sum_(memory), count_(memory) {
-  const auto max_range = static_cast<float>(max_range_m);
-  const Bounds b = bounds_of(terrain, include, max_range);
-  if (b.empty())
+  const Image<std::uint8_t> own =
+      zone.channels() == 1 ? Image<std::uint8_t>(memory) : first_channel(zone, memory);
+  const GroundBounds b = mark_binned(terrain, zone.channels() == 1 ? zone : own.view(),
+                                     static_cast<float>(max_range_m), pixel_cell_.data());
+  if (b.empty()) {
+    std::fill(pixel_cell_.data(), pixel_cell_.data() + pixel_cell_.size(), kNotBinned);
     return;
+  }
   // The first point sits in the middle of its cell, so points on a regular lattice of the
   // cell's pitch fall into cells one to one.
   x0_ = b.min_x - 0.5 * cell_;
   y0_ = b.min_y - 0.5 * cell_;
   nx_ = static_cast<int>(std::floor((b.max_x - x0_) / cell_)) + 1;
   ny_ = static_cast<int>(std::floor((b.max_y - y0_) / cell_)) + 1;
-  const auto cells = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-  highest_.assign(cells, -kInfinity);
-  lowest_.assign(cells, kInfinity);
-  sum_.assign(cells, 0.0F);
-  count_.assign(cells, 0);
-  const std::ptrdiff_t channels = include.channels();
+  bin(terrain, {b.min_x, b.min_y}, work);
+}
+
+void GroundGrid::bin(const TerrainPoints& terrain, const float (&origin)[2], std::uint64_t& work) {
+  const auto size = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  highest_.assign(size, -kInfinity);
+  lowest_.assign(size, kInfinity);
+  sum_.assign(size, 0.0F);
+  count_.assign(size, 0);
+  const LatticeAxis along{x0_, cell_, nx_};
+  const LatticeAxis across{y0_, cell_, ny_};
+  const CellSums sums{highest_.data(), lowest_.data(), sum_.data(), count_.data()};
   std::uint64_t points = 0;
-  for (int y = 0; y < terrain.height(); ++y) {
-    const float* forward = terrain.forward.row(y);
-    const float* left = terrain.left.row(y);
-    const float* elevation = terrain.elevation.row(y);
-    const float* range = terrain.range.row(y);
-    const std::uint8_t* included = include.row(y);
-    std::int32_t* pixel_cell = pixel_cell_.row(y);
-    for (int x = 0; x < terrain.width(); ++x) {
-      if (!binned(included[x * channels], elevation[x], range[x], max_range))
-        continue;
-      // Offsets are never negative beyond rounding: truncation is the floor once clamped.
-      const int ix = std::clamp(static_cast<int>((forward[x] - x0_) / cell_), 0, nx_ - 1);
-      const int iy = std::clamp(static_cast<int>((left[x] - y0_) / cell_), 0, ny_ - 1);
-      const auto i = static_cast<std::size_t>(index(ix, iy));
-      const float h = elevation[x];
-      highest_[i] = std::max(highest_[i], h);
-      lowest_[i] = std::min(lowest_[i], h);
-      sum_[i] += h;
-      ++count_[i];
-      pixel_cell[x] = static_cast<std::int32_t>(i);
-      ++points;
-    }
-  }
+  for (int y = 0; y < terrain.height(); ++y)
+    points += bin_row(terrain.forward.row(y), terrain.left.row(y), terrain.elevation.row(y), along,
+                      across, origin, terrain.width(), binned_row(y), sums);
   work += 2 * points;
 }
 

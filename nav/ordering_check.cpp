@@ -1,3 +1,4 @@
+#include "zone_buffer.hpp"
 #include "zone_rules.hpp"
 
 #include <algorithm>
@@ -19,18 +20,28 @@ struct Columns {
         ranges(rows.size(), memory) {}
 
   void gather(const TerrainPoints& terrain, const Image<std::uint8_t>& zone) {
+    // Where the next entry of each column goes, in locals so that the stores to the columns
+    // are not read as stores to them.
+    const int width = terrain.width();
+    std::pmr::vector<std::size_t> next(count.size(), count.get_allocator());
+    for (int x = 0; x < width; ++x)
+      next[static_cast<std::size_t>(x)] = start(x);
+    int* row_of = rows.data();
+    float* range_of = ranges.data();
     for (int y = terrain.height() - 1; y >= 0; --y) {
       const std::uint8_t* judged = zone.row(y);
       const float* range = terrain.range.row(y);
-      for (int x = 0; x < terrain.width(); ++x) {
+      for (int x = 0; x < width; ++x) {
         if (judged[x] == kUnknown)
           continue;
-        const std::size_t at =
-            start(x) + static_cast<std::size_t>(count[static_cast<std::size_t>(x)]++);
-        rows[at] = y;
-        ranges[at] = range[x];
+        const std::size_t at = next[static_cast<std::size_t>(x)]++;
+        row_of[at] = y;
+        range_of[at] = range[x];
       }
     }
+    for (int x = 0; x < width; ++x)
+      count[static_cast<std::size_t>(x)] =
+          static_cast<int>(next[static_cast<std::size_t>(x)] - start(x));
   }
   std::size_t start(int x) const {
     return static_cast<std::size_t>(x) * static_cast<std::size_t>(height);
@@ -44,8 +55,8 @@ struct Columns {
 
   int height;
   std::pmr::vector<int> count;
-  std::pmr::vector<int> rows;
-  std::pmr::vector<float> ranges;
+  ScratchBuffer<int> rows; // only the first count[x] of each column are written
+  ScratchBuffer<float> ranges;
 };
 
 // The longest sequence of a column's pixels whose ground distance never decreases, by patience
@@ -54,42 +65,40 @@ struct Columns {
 class LongestChain {
 public:
   explicit LongestChain(std::pmr::memory_resource* memory)
-      : tails_(memory), parent_(memory), kept_(memory) {}
+      : tails_(memory), tail_ranges_(memory), parent_(memory), kept_(memory) {}
 
   std::uint64_t find(std::span<const float> ranges) {
     const std::size_t n = ranges.size();
-    tails_.clear();
+    tails_.resize(n);
+    tail_ranges_.resize(n);
     parent_.resize(n);
     kept_.assign(n, 0);
-    std::uint64_t tests = n;
+    // One test for each pixel, and one against the end of the longest chain.
+    std::uint64_t tests = 2 * static_cast<std::uint64_t>(n);
+    std::size_t length = 0;
+    int last = -1;            // the pixel ending the longest chain
+    float longest_end = 0.0F; // and its distance
     for (std::size_t i = 0; i < n; ++i) {
       const float r = ranges[i];
       // Ground seen farther up the column usually extends the longest chain: test that first.
-      ++tests;
-      if (tails_.empty() || ranges[static_cast<std::size_t>(tails_.back())] <= r) {
-        parent_[i] = tails_.empty() ? -1 : tails_.back();
-        tails_.push_back(static_cast<int>(i));
+      if (length == 0 || longest_end <= r) {
+        parent_[i] = last;
+        tails_[length] = static_cast<int>(i);
+        tail_ranges_[length++] = r;
+        last = static_cast<int>(i);
+        longest_end = r;
         continue;
       }
-      // Otherwise the first chain end farther than r: r may follow every end before it.
-      std::size_t low = 0;
-      std::size_t high = tails_.size() - 1;
-      while (low < high) {
-        const std::size_t mid = (low + high) / 2;
-        ++tests;
-        if (ranges[static_cast<std::size_t>(tails_[mid])] <= r)
-          low = mid + 1;
-        else
-          high = mid;
-      }
-      parent_[i] = low == 0 ? -1 : tails_[low - 1];
-      if (low == tails_.size())
-        tails_.push_back(static_cast<int>(i));
-      else
-        tails_[low] = static_cast<int>(i);
+      const std::size_t at = first_end_beyond(r, length - 1, tests);
+      parent_[i] = at == 0 ? -1 : tails_[at - 1];
+      tails_[at] = static_cast<int>(i);
+      tail_ranges_[at] = r;
+      if (at + 1 < length)
+        continue;
+      last = static_cast<int>(i);
+      longest_end = r;
     }
-    for (int i = tails_.empty() ? -1 : tails_.back(); i >= 0;
-         i = parent_[static_cast<std::size_t>(i)])
+    for (int i = last; i >= 0; i = parent_[static_cast<std::size_t>(i)])
       kept_[static_cast<std::size_t>(i)] = 1;
     return tests;
   }
@@ -97,7 +106,24 @@ public:
   bool kept(std::size_t i) const { return kept_[i] != 0; }
 
 private:
+  // The first of the chain ends 0 .. last farther than r (the last one is): r may follow every
+  // end before it.
+  std::size_t first_end_beyond(float r, std::size_t last, std::uint64_t& tests) const {
+    std::size_t low = 0;
+    std::size_t high = last;
+    while (low < high) {
+      const std::size_t mid = (low + high) / 2;
+      ++tests;
+      if (tail_ranges_[mid] <= r)
+        low = mid + 1;
+      else
+        high = mid;
+    }
+    return low;
+  }
+
   std::pmr::vector<int> tails_;
+  std::pmr::vector<float> tail_ranges_; // the distance at each chain end, read without tails_
   std::pmr::vector<int> parent_;
   std::pmr::vector<std::uint8_t> kept_;
 };

@@ -2,8 +2,8 @@
 
 namespace marsokhod::nav::detail {
 
-void mark_flagged_cells(const GroundGrid& grid, const std::pmr::vector<std::uint8_t>& flagged,
-                        Zone verdict, Image<std::uint8_t>& zone) {
+void mark_flagged_cells(const GroundGrid& grid, const CellFlags& flagged, Zone verdict,
+                        Image<std::uint8_t>& zone) {
   const auto traversable = static_cast<std::uint8_t>(Zone::traversable);
   const std::ptrdiff_t channels = zone.channels();
   for (int y = 0; y < zone.height(); ++y) {

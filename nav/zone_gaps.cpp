@@ -1,19 +1,14 @@
 #include "zone_rules.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace marsokhod::nav::detail {
 namespace {
 
 constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
 constexpr auto kTraversable = static_cast<std::uint8_t>(Zone::traversable);
-
-// Unknown only because the left-right check failed there: the fill gave it a point in range.
-bool bridgeable(const TerrainPoints& terrain, const ZoneOptions& options,
-                const Image<std::uint8_t>& zone, int x, int y) {
-  return zone(x, y) == kUnknown && terrain.known(x, y) &&
-         terrain.range(x, y) <= options.max_range_m;
-}
 
 // The ends of a gap are close on the ground and at about the same height.
 bool narrow_and_level(const TerrainPoints& terrain, const ZoneOptions& options, int y, int left,
@@ -24,32 +19,35 @@ bool narrow_and_level(const TerrainPoints& terrain, const ZoneOptions& options, 
   return gap < options.bridged_gap_m && rise <= options.max_step_m;
 }
 
+// The verdict on the run [first, end) of held-back pixels of row y.
+std::uint8_t run_verdict(const TerrainPoints& terrain, const ZoneOptions& options,
+                         const std::uint8_t* row, int y, int first, int end, std::uint64_t& tests) {
+  const int width = terrain.width();
+  // The run's ends must be seen ground on both sides.
+  if (options.bridged_gap_m <= 0.0 || first == 0 || end == width ||
+      row[first - 1] != kTraversable || row[end] != kTraversable)
+    return kUnknown;
+  ++tests;
+  return narrow_and_level(terrain, options, y, first - 1, end) ? kTraversable : kUnknown;
+}
+
 } // namespace
 
 std::uint64_t bridge_small_gaps(const TerrainPoints& terrain, const ZoneOptions& options,
                                 Image<std::uint8_t>& zone) {
-  if (options.bridged_gap_m <= 0.0)
-    return 0;
   std::uint64_t tests = 0;
+  const int width = zone.width();
   for (int y = 0; y < zone.height(); ++y) {
+    std::uint8_t* row = zone.row(y);
     int x = 0;
-    while (x < zone.width()) {
-      if (!bridgeable(terrain, options, zone, x, y)) {
+    // Held-back pixels are few: the library's byte search skips to the next one.
+    while (const void* hit =
+               std::memchr(row + x, kUnreliable, static_cast<std::size_t>(width - x))) {
+      const auto first = static_cast<int>(static_cast<const std::uint8_t*>(hit) - row);
+      x = first;
+      while (x < width && row[x] == kUnreliable)
         ++x;
-        continue;
-      }
-      const int first = x;
-      while (x < zone.width() && bridgeable(terrain, options, zone, x, y))
-        ++x;
-      // [first, x) is the run; its ends must be seen ground on both sides.
-      if (first == 0 || x == zone.width() || zone(first - 1, y) != kTraversable ||
-          zone(x, y) != kTraversable)
-        continue;
-      ++tests;
-      if (!narrow_and_level(terrain, options, y, first - 1, x))
-        continue;
-      for (int i = first; i < x; ++i)
-        zone(i, y) = kTraversable;
+      std::fill(row + first, row + x, run_verdict(terrain, options, row, y, first, x, tests));
     }
   }
   return tests;

@@ -25,31 +25,84 @@ std::pmr::vector<int> disc_half_runs(int r, double reach, std::pmr::memory_resou
   return half_run;
 }
 
-void stamp_disc(const GroundGrid& grid, int ix, int iy, const std::pmr::vector<int>& half_run,
-                std::pmr::vector<std::uint8_t>& near) {
-  const int r = static_cast<int>(half_run.size() / 2);
-  for (int dy = std::max(-r, -iy); dy <= std::min(r, grid.ny() - 1 - iy); ++dy) {
-    const int half = half_run[static_cast<std::size_t>(dy + r)];
-    if (half < 0)
-      continue;
-    const int first = std::max(0, ix - half);
-    const int last = std::min(grid.nx() - 1, ix + half);
-    if (first > last)
-      continue;
-    const auto row = near.begin() + grid.index(first, iy + dy);
-    std::fill(row, row + (last - first + 1), std::uint8_t{1});
+// One row of flags grown by one cell either way.
+void grow_row(const std::uint8_t* from, int n, std::uint8_t* to) {
+  if (n == 1) {
+    to[0] = from[0];
+    return;
   }
+  to[0] = from[0] | from[1];
+  for (int i = 1; i + 1 < n; ++i)
+    to[i] = from[i - 1] | from[i] | from[i + 1];
+  to[n - 1] = from[n - 2] | from[n - 1];
+}
+
+// The flags grown by k = 1 .. widest cells along each row, one grid after another (grid k - 1
+// from k): each from the one before, a pass of byte ORs that vectorises.
+CellFlags spread_along_rows(const GroundGrid& grid, const CellFlags& flags, int widest,
+                            std::pmr::memory_resource* memory) {
+  const std::size_t cells = flags.size();
+  CellFlags spread(cells * static_cast<std::size_t>(widest), memory);
+  for (int k = 1; k <= widest; ++k) {
+    const std::uint8_t* in = k == 1 ? flags.data() : spread.data() + (k - 2) * cells;
+    std::uint8_t* out = spread.data() + (k - 1) * cells;
+    for (int iy = 0; iy < grid.ny(); ++iy)
+      grow_row(in + grid.index(0, iy), grid.nx(), out + grid.index(0, iy));
+  }
+  return spread;
 }
 
 } // namespace
+
+CellFlags near_cells(const GroundGrid& grid, const CellFlags& obstacle, const ZoneOptions& options,
+                     std::pmr::memory_resource* memory, std::uint64_t& tests) {
+  CellFlags near(obstacle.size(), memory);
+  std::fill_n(near.data(), near.size(), std::uint8_t{0});
+  if (grid.empty() || options.rover_half_width_m <= 0.0)
+    return near;
+  const auto obstacles = static_cast<std::uint64_t>(std::count_if(
+      obstacle.data(), obstacle.data() + obstacle.size(), [](std::uint8_t f) { return f != 0; }));
+  if (obstacles == 0)
+    return near;
+  // Every cell whose centre lies within the half-width of an obstacle cell's centre: the disc
+  // of cells a stamp around each obstacle cell would cover, as the union over the disc's rows of
+  // the obstacle flags grown along the rows by that row's half-run and moved across by its dy.
+  const double reach = options.rover_half_width_m / grid.cell();
+  const int r = static_cast<int>(std::floor(reach));
+  const std::pmr::vector<int> half_run = disc_half_runs(r, reach, memory);
+  tests +=
+      obstacles * static_cast<std::uint64_t>(2 * r + 1) * static_cast<std::uint64_t>(2 * r + 1);
+  // Growing by the whole row's width already reaches every cell of it.
+  const int widest = std::min(r, grid.nx() - 1);
+  const CellFlags spread = spread_along_rows(grid, obstacle, widest, memory);
+  const auto grown = [&](int half) {
+    const int k = std::min(half, widest);
+    return k == 0 ? obstacle.data()
+                  : spread.data() + static_cast<std::size_t>(k - 1) * obstacle.size();
+  };
+  // In a local, the row length is not reloaded after every store, and the loop vectorises.
+  const int nx = grid.nx();
+  for (int iy = 0; iy < grid.ny(); ++iy) {
+    std::uint8_t* to = near.data() + grid.index(0, iy);
+    for (int dy = std::max(-r, iy - (grid.ny() - 1)); dy <= std::min(r, iy); ++dy) {
+      const int half = half_run[static_cast<std::size_t>(dy + r)];
+      if (half < 0)
+        continue;
+      const std::uint8_t* from = grown(half) + grid.index(0, iy - dy);
+      for (int ix = 0; ix < nx; ++ix)
+        to[ix] |= from[ix];
+    }
+  }
+  return near;
+}
 
 std::uint64_t grow_margin(const GroundGrid& grid, const ZoneOptions& options,
                           Image<std::uint8_t>& zone, std::pmr::memory_resource* memory) {
   if (grid.empty() || options.rover_half_width_m <= 0.0)
     return 0;
-  std::uint64_t tests = 0;
   const std::size_t cells = static_cast<std::size_t>(grid.nx()) * grid.ny();
-  std::pmr::vector<std::uint8_t> obstacle(cells, 0, memory);
+  CellFlags obstacle(cells, memory);
+  std::fill_n(obstacle.data(), cells, std::uint8_t{0});
   const std::ptrdiff_t channels = zone.channels();
   for (int y = 0; y < zone.height(); ++y) {
     const std::int32_t* pixel_cells = grid.cells_of_row(y);
@@ -58,21 +111,8 @@ std::uint64_t grow_margin(const GroundGrid& grid, const ZoneOptions& options,
       if (pixel_cells[x] >= 0 && is_obstacle(row[x * channels]))
         obstacle[static_cast<std::size_t>(pixel_cells[x])] = 1;
   }
-  // Every cell whose centre lies within the half-width of an obstacle cell's centre: a disc of
-  // cells stamped around each obstacle cell, one run of cells per row of the disc.
-  const double reach = options.rover_half_width_m / grid.cell();
-  const int r = static_cast<int>(std::floor(reach));
-  const std::pmr::vector<int> half_run = disc_half_runs(r, reach, memory);
-  const auto disc_tests =
-      static_cast<std::uint64_t>(2 * r + 1) * static_cast<std::uint64_t>(2 * r + 1);
-  std::pmr::vector<std::uint8_t> near(cells, 0, memory);
-  for (int iy = 0; iy < grid.ny(); ++iy)
-    for (int ix = 0; ix < grid.nx(); ++ix) {
-      if (obstacle[static_cast<std::size_t>(grid.index(ix, iy))] == 0)
-        continue;
-      tests += disc_tests;
-      stamp_disc(grid, ix, iy, half_run, near);
-    }
+  std::uint64_t tests = 0;
+  const CellFlags near = near_cells(grid, obstacle, options, memory, tests);
   mark_flagged_cells(grid, near, Zone::margin, zone);
   return tests;
 }

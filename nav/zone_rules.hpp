@@ -2,13 +2,15 @@
 
 // The stages of find_zones (zones.hpp), each returning the comparisons it made so that the
 // caller can report them to its meter. They work on the visible points binned into a ground
-// grid (ground_grid.hpp) and write their verdicts into the pixels' zones.
+// grid (ground_grid.hpp): the step, slope and margin rules decide per cell what they can, and
+// judge_pixels() then writes every pixel's verdict in one pass.
 
 #include "ground_grid.hpp"
 
 #include "marsokhod/nav/elevation.hpp"
 #include "marsokhod/nav/zones.hpp"
 
+#include <array>
 #include <cstdint>
 #include <memory_resource>
 
@@ -16,6 +18,17 @@ namespace marsokhod::nav::detail {
 
 /// Absolute slack of the ordering test, metres, on top of ZoneOptions::order_tolerance.
 inline constexpr double kOrderSlack_m = 0.05;
+
+/// A pixel find_zones holds back between mark_unknown and bridge_small_gaps: seen and in range,
+/// but not reliable, so a bridged gap may still turn it traversable. Never left in a zone map.
+inline constexpr std::uint8_t kUnreliable = 5;
+
+/// Writes Zone::unknown where nothing was seen or the point lies beyond max_range_m,
+/// kUnreliable where (with unreliable_is_unknown) only `reliable` (0) rejects the point, and
+/// Zone::traversable elsewhere, into the single-channel `zone`. Returns whether any pixel is
+/// kUnreliable.
+bool mark_unknown(const TerrainPoints& terrain, ImageView<const std::uint8_t> reliable,
+                  const ZoneOptions& options, Image<std::uint8_t>& zone);
 
 /// Marks Zone::unknown on pixels whose ground distance contradicts their column. Seen from
 /// above, ground farther up the image is never nearer, so a column's distances, read from the
@@ -29,9 +42,10 @@ inline constexpr double kOrderSlack_m = 0.05;
 std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions& options,
                                 Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);
 
-/// Turns back to Zone::traversable the runs of unknown pixels along a row that have a
-/// (filled-in) ground point and whose two traversable ends are less than bridged_gap_m apart
-/// on the ground and within max_step_m of each other in height. Returns the tests made.
+/// Turns back to Zone::traversable the runs of kUnreliable pixels along a row of the
+/// single-channel `zone` whose two traversable ends are less than bridged_gap_m apart on the
+/// ground and within max_step_m of each other in height, and the other kUnreliable pixels to
+/// Zone::unknown. Returns the tests made (one per run with traversable ends).
 std::uint64_t bridge_small_gaps(const TerrainPoints& terrain, const ZoneOptions& options,
                                 Image<std::uint8_t>& zone);
 
@@ -43,26 +57,72 @@ int cells_within(const GroundGrid& grid, double distance_m);
 /// one.
 int cells_apart_within(const GroundGrid& grid, double distance_m);
 
-/// Marks Zone::step on traversable pixels: some binned point in the cells
-/// cells_apart_within(step_baseline_m) around the pixel's own cell, along both ground axes, is
-/// higher or lower than the pixel's own point by more than max_step_m. Every pair compared lies
-/// within the baseline: a window of whole cells reaching a cell further would also compare points
-/// up to a cell beyond it, and read the foot of every rock as a step a baseline away.
-std::uint64_t mark_steps(const GroundGrid& grid, const TerrainPoints& terrain,
-                         const ZoneOptions& options, Image<std::uint8_t>& zone,
-                         std::pmr::memory_resource* memory);
+/// Highest and lowest binned elevation over the window of cells_apart_within(step_baseline_m)
+/// cells around each cell, along both ground axes (-inf and +inf where the window is empty).
+struct StepWindow {
+  ScratchBuffer<float> highest;
+  ScratchBuffer<float> lowest;
+};
 
-/// Marks Zone::slope on traversable pixels whose cell's fitted plane is too steep.
-std::uint64_t mark_slopes(const GroundGrid& grid, const ZoneOptions& options,
-                          Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);
+/// A flag (0 or 1) per cell of a grid, row by row.
+using CellFlags = ScratchBuffer<std::uint8_t>;
+
+/// The step rule's window around every cell. Every pair compared lies within the baseline: a
+/// window of whole cells reaching a cell further would also compare points up to a cell beyond
+/// it, and read the foot of every rock as a step a baseline away. `comparisons` counts the
+/// maxima and minima taken.
+StepWindow step_window(const GroundGrid& grid, const ZoneOptions& options,
+                       std::pmr::memory_resource* memory, std::uint64_t& comparisons);
+
+/// Whether a point of height `own` in a cell whose window is (`highest`, `lowest`) is a step:
+/// some point of the window is higher, or lower, than it by more than `limit`. Float
+/// differences only grow as `own` moves away, so a cell holds a step exactly when its lowest or
+/// its highest point is one.
+inline bool is_step(float highest, float lowest, float own, float limit) {
+  return (highest - own > limit) || (own - lowest > limit);
+}
+
+/// Non-zero for the non-empty cells holding a step: their lowest or highest point is one.
+CellFlags step_cells(const GroundGrid& grid, const StepWindow& window, float limit,
+                     std::pmr::memory_resource* memory);
+
+/// Non-zero for the non-empty cells whose fitted plane is steeper than max_slope_deg. `tests`
+/// counts the cell means read.
+CellFlags steep_cells(const GroundGrid& grid, const ZoneOptions& options,
+                      std::pmr::memory_resource* memory, std::uint64_t& tests);
+
+/// Non-zero for the cells whose centre lies within rover_half_width_m of the centre of a
+/// cell flagged in `obstacle`; all zero when the half-width is 0. `tests` counts the cells of
+/// the disc around each obstacle cell.
+CellFlags near_cells(const GroundGrid& grid, const CellFlags& obstacle, const ZoneOptions& options,
+                     std::pmr::memory_resource* memory, std::uint64_t& tests);
 
 /// Sets `verdict` on the traversable pixels whose cell is flagged (non-zero) in `flagged`.
-void mark_flagged_cells(const GroundGrid& grid, const std::pmr::vector<std::uint8_t>& flagged,
-                        Zone verdict, Image<std::uint8_t>& zone);
+void mark_flagged_cells(const GroundGrid& grid, const CellFlags& flagged, Zone verdict,
+                        Image<std::uint8_t>& zone);
 
 /// Marks Zone::margin on traversable pixels whose cell lies within the rover's half-width of a
 /// cell holding a step or slope pixel.
 std::uint64_t grow_margin(const GroundGrid& grid, const ZoneOptions& options,
                           Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);
+
+/// What find_zones makes of a cell's traversable pixels, besides their own step test.
+struct CellRules {
+  StepWindow window;
+  CellFlags step;
+  CellFlags steep;
+  CellFlags near;
+};
+
+/// The verdict of every binned pixel of the single-channel `zone` (all of them traversable): a
+/// step by its own test, else a slope where its cell is steep, else a margin where its cell is
+/// near an obstacle. Pixels that were not binned keep their zone. Returns the step tests made
+/// (two a pixel).
+std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainPoints& terrain,
+                           const CellRules& rules, float step_limit, Image<std::uint8_t>& zone,
+                           std::pmr::memory_resource* memory);
+
+/// The number of pixels of each zone (channel 0), values beyond the last zone counted as it.
+std::array<std::uint64_t, kZoneKinds> count_zones(const Image<std::uint8_t>& zone);
 
 } // namespace marsokhod::nav::detail

@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <optional>
-#include <vector>
 
 namespace marsokhod::nav::detail {
 namespace {
@@ -11,97 +9,99 @@ namespace {
 // The plane fitted to the 3 x 3 cells at offsets {-d, 0, d} around a cell, as the world's
 // ground-truth obstacle map fits it to terrain nodes: the gradient along an axis is the
 // difference of the mean heights of the two outer lines over their distance.
+//
+// Only samples present on both lines are paired, so that a line cut short by the grid's edge
+// does not mix in the other axis's gradient. Where an outer line lies beyond the grid's edge the
+// centre line stands in for it over half the distance, as the world's rule clamps its samples at
+// the edge. An outer line that is merely empty (ground hidden behind a rock, or far rows too
+// sparse) gets no stand-in: a one-sided difference would read a rock too low to be an obstacle,
+// against the hidden ground behind it, as a slope twice as steep as its flank over the baseline,
+// and its margin would close the way around it.
 class PlaneFit {
 public:
+  // The means sit in a frame of d empty cells, so that a sample across the grid's edge reads
+  // as empty without a test.
   PlaneFit(const GroundGrid& grid, int d, std::pmr::memory_resource* memory)
-      : grid_(grid), d_(d), means_(static_cast<std::size_t>(grid.nx()) * grid.ny(), memory) {
+      : grid_(grid), d_(d), stride_(grid.nx() + 2 * d),
+        means_(static_cast<std::size_t>(stride_) * static_cast<std::size_t>(grid.ny() + 2 * d),
+               GroundGrid::kNoHeight, memory) {
     // Each cell's mean is read by up to twelve neighbours: divide once.
-    for (std::size_t i = 0; i < means_.size(); ++i)
-      means_[i] = grid.mean(static_cast<int>(i));
+    for (int iy = 0; iy < grid.ny(); ++iy)
+      for (int ix = 0; ix < grid.nx(); ++ix)
+        means_[framed(ix, iy)] = grid.mean(grid.index(ix, iy));
   }
 
-  // Squared gradient of the plane at cell (ix, iy).
+  // Squared gradient of the plane at cell (ix, iy); `tests` counts the means read.
   double squared_gradient(int ix, int iy, std::uint64_t& tests) const {
-    const double gx = gradient(ix, iy, 1, 0, tests);
-    const double gy = gradient(ix, iy, 0, 1, tests);
+    const float* centre = means_.data() + framed(ix, iy);
+    const double gx = gradient(centre, ix, grid_.nx(), 1, stride_, tests);
+    const double gy = gradient(centre, iy, grid_.ny(), stride_, 1, tests);
     return gx * gx + gy * gy;
   }
 
 private:
-  // Gradient along (ax, ay): the outer lines are at -d and +d along it, spread along the
-  // other axis. Only samples present on both lines are paired, so that a line cut short by
-  // the grid's edge does not mix in the other axis's gradient. Where an outer line lies beyond
-  // the grid's edge the centre line stands in for it over half the distance, as the world's
-  // rule clamps its samples at the edge. An outer line that is merely empty (ground hidden
-  // behind a rock, or far rows too sparse) gets no stand-in: a one-sided difference would read
-  // a rock too low to be an obstacle, against the hidden ground behind it, as a slope twice as
-  // steep as its flank over the baseline, and its margin would close the way around it.
-  double gradient(int ix, int iy, int ax, int ay, std::uint64_t& tests) const {
-    const int along = ax != 0 ? ix : iy;
-    const int cells = ax != 0 ? grid_.nx() : grid_.ny();
+  std::size_t framed(int ix, int iy) const {
+    return static_cast<std::size_t>(iy + d_) * static_cast<std::size_t>(stride_) +
+           static_cast<std::size_t>(ix + d_);
+  }
+
+  // Gradient along the axis whose cells lie `step` apart in the frame (`across` along the
+  // other axis), at cell `along` of `cells` along it.
+  double gradient(const float* centre, int along, int cells, std::ptrdiff_t step,
+                  std::ptrdiff_t across, std::uint64_t& tests) const {
     const int from = along - d_ >= 0 ? -d_ : 0;
     const int to = along + d_ < cells ? d_ : 0;
     if (from == to)
       return 0.0;
-    const std::optional<double> rise = paired_rise(ix, iy, ax, ay, from, to, tests);
-    return rise ? *rise / ((to - from) * grid_.cell()) : 0.0;
-  }
-
-  // Mean rise from the line at `from` to the line at `to` along (ax, ay) over the samples
-  // present on both; nothing when no sample is.
-  std::optional<double> paired_rise(int ix, int iy, int ax, int ay, int from, int to,
-                                    std::uint64_t& tests) const {
+    tests += 6;
+    const float* low = centre + from * step;
+    const float* high = centre + to * step;
+    const std::ptrdiff_t side = d_ * across;
     double rise = 0.0;
     int pairs = 0;
-    for (const int across : {-d_, 0, d_}) {
-      const float low = sample(ix, iy, ax, ay, from, across, tests);
-      const float high = sample(ix, iy, ax, ay, to, across, tests);
-      if (std::isnan(low) || std::isnan(high))
-        continue;
-      rise += high - low;
-      ++pairs;
-    }
+    take_pair(low[-side], high[-side], rise, pairs);
+    take_pair(low[0], high[0], rise, pairs);
+    take_pair(low[side], high[side], rise, pairs);
     if (pairs == 0)
-      return std::nullopt;
-    return rise / pairs;
+      return 0.0;
+    return rise / pairs / ((to - from) * grid_.cell());
   }
 
-  // Mean height of the cell `offset` along (ax, ay) and `across` along the other axis; NaN
-  // when empty or outside the grid.
-  float sample(int ix, int iy, int ax, int ay, int offset, int across, std::uint64_t& tests) const {
-    const int cx = ix + ax * offset + ay * across;
-    const int cy = iy + ay * offset + ax * across;
-    ++tests;
-    if (!grid_.inside(cx, cy))
-      return GroundGrid::kNoHeight;
-    return means_[static_cast<std::size_t>(grid_.index(cx, cy))];
+  // Adds the rise of a pair of samples when both are present, without a branch. A sum that
+  // starts at +0 is never -0, so adding +0 for a missing pair leaves it as it was.
+  static void take_pair(float low, float high, double& rise, int& pairs) {
+    const bool present = !std::isnan(low) & !std::isnan(high);
+    rise += present ? static_cast<double>(high - low) : 0.0;
+    pairs += present ? 1 : 0;
   }
 
   const GroundGrid& grid_;
   int d_;
+  int stride_;
   std::pmr::vector<float> means_;
 };
 
 } // namespace
 
-std::uint64_t mark_slopes(const GroundGrid& grid, const ZoneOptions& options,
-                          Image<std::uint8_t>& zone, std::pmr::memory_resource* memory) {
+CellFlags steep_cells(const GroundGrid& grid, const ZoneOptions& options,
+                      std::pmr::memory_resource* memory, std::uint64_t& tests) {
+  CellFlags steep(static_cast<std::size_t>(grid.nx()) * grid.ny(), memory);
   if (grid.empty())
-    return 0;
-  std::uint64_t tests = 0;
+    return steep;
   const double limit = std::tan(options.max_slope_deg * std::numbers::pi / 180.0);
   const PlaneFit fit(grid, cells_within(grid, 0.5 * options.slope_baseline_m), memory);
-  std::pmr::vector<std::uint8_t> steep(static_cast<std::size_t>(grid.nx()) * grid.ny(), 0, memory);
+  // In locals: a byte store may alias anything, and would make every member be read again.
+  const double squared_limit = limit * limit;
+  const std::int32_t* count = grid.counts().data();
+  std::uint8_t* out = steep.data();
+  const int nx = grid.nx();
   for (int iy = 0; iy < grid.ny(); ++iy)
-    for (int ix = 0; ix < grid.nx(); ++ix) {
-      const int i = grid.index(ix, iy);
-      if (grid.count(i) == 0)
-        continue;
-      steep[static_cast<std::size_t>(i)] =
-          fit.squared_gradient(ix, iy, tests) > limit * limit ? 1 : 0;
+    for (int ix = 0; ix < nx; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(iy) * static_cast<std::size_t>(nx) +
+                            static_cast<std::size_t>(ix);
+      out[i] = count[i] > 0 && fit.squared_gradient(ix, iy, tests) > squared_limit ? 1 : 0;
     }
-  mark_flagged_cells(grid, steep, Zone::slope, zone);
-  return tests;
+  return steep;
 }
 
 } // namespace marsokhod::nav::detail

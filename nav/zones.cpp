@@ -19,51 +19,37 @@ void require_positive(double value, const char* name) {
         fmt::format("zone option {} = {}: must be finite and positive", name, value));
 }
 
-// Unknown where nothing was seen, nothing reliable was seen (when asked), or the point lies
-// beyond the range the rules judge.
-void mark_unknown(const TerrainPoints& terrain, ImageView<const std::uint8_t> reliable,
-                  const ZoneOptions& options, Image<std::uint8_t>& zone) {
-  const bool use_reliable = options.unreliable_is_unknown && !reliable.empty();
-  const auto traversable = static_cast<std::uint8_t>(Zone::traversable);
-  const auto unknown = static_cast<std::uint8_t>(Zone::unknown);
-  for (int y = 0; y < terrain.height(); ++y) {
-    const float* elevation = terrain.elevation.row(y);
-    const float* range = terrain.range.row(y);
-    std::uint8_t* out = zone.row(y);
-    for (int x = 0; x < terrain.width(); ++x) {
-      const bool not_seen = !std::isfinite(elevation[x]) || (use_reliable && reliable(x, y) == 0) ||
-                            range[x] > options.max_range_m;
-      out[x] = not_seen ? unknown : traversable;
-    }
-  }
-}
-
-// The pixels the rules may look at: everything not unknown.
-Image<std::uint8_t> seen_pixels(const Image<std::uint8_t>& zone,
-                                std::pmr::memory_resource* memory) {
-  Image<std::uint8_t> seen(zone.width(), zone.height(), 1, 0, memory);
-  const auto unknown = static_cast<std::uint8_t>(Zone::unknown);
-  const std::ptrdiff_t channels = zone.channels();
-  for (int y = 0; y < zone.height(); ++y) {
-    const std::uint8_t* row = zone.row(y);
-    std::uint8_t* out = seen.row(y);
-    for (int x = 0; x < zone.width(); ++x)
-      out[x] = row[x * channels] != unknown ? 1 : 0;
-  }
-  return seen;
-}
-
 void check_sizes(const TerrainPoints& terrain, int width, int height, const char* what) {
   if (width != terrain.width() || height != terrain.height())
     throw std::invalid_argument(fmt::format("{}: {}x{} does not fit the {}x{} terrain", what, width,
                                             height, terrain.width(), terrain.height()));
 }
 
-void recount(ZoneMap& zones) {
-  zones.counts.fill(0);
-  for (int y = 0; y < zones.height(); ++y)
-    for (int x = 0; x < zones.width(); ++x)
-      ++zones.counts[std::min<std::size_t>(zones.zone(x, y), kZoneKinds - 1)];
+// Obstacle cells: those holding a step or steep.
+detail::CellFlags obstacle_cells(const detail::CellRules& rules,
+                                 std::pmr::memory_resource* memory) {
+  const std::size_t cells = rules.steep.size();
+  detail::CellFlags obstacle(cells, memory);
+  for (std::size_t i = 0; i < cells; ++i)
+    obstacle[i] = rules.step[i] | rules.steep[i];
+  return obstacle;
+}
+
+// Steps, slopes and margins on the binned pixels, all traversable so far: the rules decide per
+// cell, and one pass over the pixels applies them.
+std::uint64_t mark_hazards(const TerrainPoints& terrain, const ZoneOptions& options,
+                           const detail::GroundGrid& grid, Image<std::uint8_t>& zone,
+                           std::pmr::memory_resource* memory) {
+  if (grid.empty())
+    return 0;
+  std::uint64_t work = 0;
+  const auto step_limit = static_cast<float>(options.max_step_m);
+  detail::CellRules rules{
+      detail::step_window(grid, options, memory, work), detail::CellFlags(memory),
+      detail::steep_cells(grid, options, memory, work), detail::CellFlags(memory)};
+  rules.step = detail::step_cells(grid, rules.window, step_limit, memory);
+  rules.near = detail::near_cells(grid, obstacle_cells(rules, memory), options, memory, work);
+  return work + detail::judge_pixels(grid, terrain, rules, step_limit, zone, memory);
 }
 
 } // namespace
@@ -114,16 +100,15 @@ ZoneMap find_zones(const TerrainPoints& terrain, ImageView<const std::uint8_t> r
   if (!reliable.empty())
     check_sizes(terrain, reliable.width(), reliable.height(), "find_zones: the reliability mask");
   ZoneMap map{Image<std::uint8_t>(terrain.width(), terrain.height(), 1, 0, memory), {}};
-  mark_unknown(terrain, reliable, options, map.zone);
-  std::uint64_t work = detail::bridge_small_gaps(terrain, options, map.zone);
+  std::uint64_t work = 0;
+  if (detail::mark_unknown(terrain, reliable, options, map.zone))
+    work += detail::bridge_small_gaps(terrain, options, map.zone);
   work += detail::mark_out_of_order(terrain, options, map.zone, memory);
-  const detail::GroundGrid grid(terrain, seen_pixels(map.zone, memory), options.cell_m,
-                                options.max_range_m, memory, work);
-  work += detail::mark_steps(grid, terrain, options, map.zone, memory);
-  work += detail::mark_slopes(grid, options, map.zone, memory);
-  work += detail::grow_margin(grid, options, map.zone, memory);
+  const detail::GroundGrid grid(terrain, map.zone, options.cell_m, options.max_range_m, memory,
+                                work);
+  work += mark_hazards(terrain, options, grid, map.zone, memory);
   detail::report(meter, Work::hazard_test, work);
-  recount(map);
+  map.counts = detail::count_zones(map.zone);
   return map;
 }
 
@@ -133,11 +118,11 @@ void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMa
   validate(options);
   check_sizes(terrain, zones.width(), zones.height(), "add_margin: the zone map");
   std::uint64_t work = 0;
-  const detail::GroundGrid grid(terrain, seen_pixels(zones.zone, memory), options.cell_m,
-                                options.max_range_m, memory, work);
+  const detail::GroundGrid grid(terrain, zones.zone, options.cell_m, options.max_range_m, memory,
+                                work);
   work += detail::grow_margin(grid, options, zones.zone, memory);
   detail::report(meter, Work::hazard_test, work);
-  recount(zones);
+  zones.counts = detail::count_zones(zones.zone);
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
