@@ -1,0 +1,22 @@
+#pragma once
+
+// Which pixels of a row the right camera can see the level ground of (private; navigate()'s
+// seeable disparity, docs/navigation.md).
+
+#include <cstdint>
+#include <memory_resource>
+#include <vector>
+
+namespace marsokhod::nav::detail {
+
+/// x / span for every column 0..width - 1: the same for every row.
+std::pmr::vector<double> column_fractions(int width, double span,
+                                          std::pmr::memory_resource* memory);
+
+/// Sets out[x] = +inf where seen[x] is 0, or where the level ground's disparity
+///   ground_d = first_d + rise * fractions[x]
+/// is not positive or exceeds the column (x < ground_d): exactly the pixels that test marks.
+void hide_unseeable(const std::uint8_t* seen, const double* fractions, double first_d, double rise,
+                    int width, float* out);
+
+} // namespace marsokhod::nav::detail

@@ -1,0 +1,66 @@
+#include "../../nav/terrain_view.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+// hide_unseeable decides whole runs of a row from its two ends; it must mark exactly the pixels
+// the per-pixel test marks, for rising and falling rows, rows across the horizon and the sky.
+
+namespace marsokhod::nav::detail {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+std::vector<float> tested_per_pixel(const std::vector<std::uint8_t>& seen, double first_d,
+                                    double rise, std::vector<float> out) {
+  const int width = static_cast<int>(out.size());
+  const double span = std::max(width - 1.0, 1.0);
+  for (int x = 0; x < width; ++x) {
+    const double ground_d = first_d + rise * (x / span);
+    if (seen[x] == 0 || ground_d <= 0.0 || x < ground_d)
+      out[x] = kInf;
+  }
+  return out;
+}
+
+double unit(std::mt19937_64& random) {
+  return static_cast<double>(random() >> 11) * 0x1.0p-53;
+}
+
+TEST(HideUnseeable, MarksWhatThePerPixelTestMarks) {
+  std::mt19937_64 random(9127);
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int width = 1 + static_cast<int>(random() % 300);
+    const double scale = trial % 2 == 0 ? 40.0 : width * 1.5;
+    double first_d = scale * (unit(random) - 0.2);
+    double rise = scale * (unit(random) - 0.5);
+    if (trial % 7 == 0)
+      rise = 0.0;
+    if (trial % 11 == 0)
+      first_d = static_cast<double>(random() % 40);
+    if (trial % 13 == 0)
+      rise = static_cast<double>(random() % 9) - 4.0;
+    std::vector<std::uint8_t> seen(static_cast<std::size_t>(width));
+    std::vector<float> out(static_cast<std::size_t>(width));
+    for (int x = 0; x < width; ++x) {
+      seen[x] = random() % 5 == 0 ? 0 : 255;
+      out[x] = static_cast<float>(unit(random));
+    }
+    const std::vector<float> want = tested_per_pixel(seen, first_d, rise, out);
+    const std::pmr::vector<double> fractions =
+        column_fractions(width, std::max(width - 1.0, 1.0), std::pmr::get_default_resource());
+    hide_unseeable(seen.data(), fractions.data(), first_d, rise, width, out.data());
+    for (int x = 0; x < width; ++x)
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(out[x]), std::bit_cast<std::uint32_t>(want[x]))
+          << trial << ": x " << x << " of " << width << ", first " << first_d << ", rise " << rise;
+  }
+}
+
+} // namespace
+} // namespace marsokhod::nav::detail
