@@ -52,10 +52,11 @@ Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<f
   const double last = left.width() - 1.0;
   const double span = std::max(last, 1.0);
   const std::pmr::vector<double> fractions = detail::column_fractions(left.width(), span, memory);
+  const detail::LevelGround ground(rig, options.attitude);
   for (int y = 0; y < left.height(); ++y) {
     // The level ground's disparity is affine along a row.
-    const double first_d = rig.ground_disparity(0.0, y, options.attitude);
-    const double rise = rig.ground_disparity(last, y, options.attitude) - first_d;
+    const double first_d = ground.disparity(0.0, y);
+    const double rise = ground.disparity(last, y) - first_d;
     detail::hide_unseeable(textured.row(y), fractions.data(), first_d, rise, left.width(),
                            seeable.row(y));
   }

@@ -36,6 +36,19 @@ int first_column_from(double limit, int width) {
 
 } // namespace
 
+LevelGround::LevelGround(const StereoRig& rig, const Attitude& attitude)
+    : pose_(rig.camera_to_level(Eye::left, attitude)), cx_(rig.cx()), cy_(rig.cy()),
+      focal_(rig.focal_px()), baseline_(rig.baseline_m()) {}
+
+double LevelGround::disparity(double u, double v) const {
+  const Eigen::Vector3d direction = pose_.linear() * Eigen::Vector3d(u - cx_, v - cy_, focal_);
+  const double height = pose_.translation().z();
+  if (height <= 0.0 || direction.z() >= 0.0)
+    return 0.0;
+  const double t = height / -direction.z();
+  return baseline_ / t;
+}
+
 std::pmr::vector<double> column_fractions(int width, double span,
                                           std::pmr::memory_resource* memory) {
   std::pmr::vector<double> fractions(static_cast<std::size_t>(std::max(width, 0)), memory);

@@ -62,5 +62,25 @@ TEST(HideUnseeable, MarksWhatThePerPixelTestMarks) {
   }
 }
 
+TEST(LevelGround, GivesTheRigsGroundDisparity) {
+  std::mt19937_64 random(4407);
+  for (int trial = 0; trial < 50; ++trial) {
+    RigParameters p;
+    p.width_px = 16 + static_cast<int>(random() % 300);
+    p.height_px = 16 + static_cast<int>(random() % 300);
+    p.pitch_down_deg = 30.0 * unit(random) - 5.0;
+    const StereoRig rig(p);
+    const Attitude attitude{20.0 * unit(random) - 10.0, 20.0 * unit(random) - 10.0};
+    const LevelGround ground(rig, attitude);
+    for (int v = 0; v < rig.height(); v += 7)
+      for (const double u : {0.0, rig.cx(), rig.width() - 1.0}) {
+        const double want = rig.ground_disparity(u, v, attitude);
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(ground.disparity(u, v)),
+                  std::bit_cast<std::uint64_t>(want))
+            << trial << ": " << u << "," << v;
+      }
+  }
+}
+
 } // namespace
 } // namespace marsokhod::nav::detail
