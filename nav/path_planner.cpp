@@ -67,13 +67,13 @@ std::optional<PixelPoint> find_start(const TerrainPoints& terrain, const ZoneMap
     if (!row_reaches_start_box(terrain.range.row(y), terrain.left.row(y), terrain.width(),
                                max_range, max_offset))
       continue;
+    const float* ranges = terrain.range.row(y);
+    const float* lefts = terrain.left.row(y);
     for (int x = 0; x < terrain.width(); ++x) {
-      if (!zones.traversable(x, y))
+      if (std::abs(lefts[x]) > max_offset || ranges[x] > max_range || !zones.traversable(x, y))
         continue;
-      const double range = terrain.range(x, y);
-      const double offset = std::abs(terrain.left(x, y));
-      if (offset > options.start_lateral_m || range > options.start_max_m)
-        continue;
+      const double range = ranges[x];
+      const double offset = std::abs(lefts[x]);
       if (!best || range < best_range || (range == best_range && offset < best_offset)) {
         best = PixelPoint{x, y};
         best_range = range;
