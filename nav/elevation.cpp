@@ -86,11 +86,11 @@ void store_floats(float* to, detail::Floats2 lanes) {
   std::memcpy(to, &lanes, sizeof lanes);
 }
 
-// ground_distance() of the known lanes, +inf in the others; hypot only where a lane needs it.
-detail::Floats2 ground_distances(Doubles2 x, Doubles2 y, Masks2 known) {
+// ground_distance() of two lanes, hypot only where a known lane needs it (bit i of `known` set
+// for a known lane i; the others may be nonsense).
+detail::Floats2 ground_distances(Doubles2 x, Doubles2 y, int known) {
   const Doubles2 squared = x * x + y * y;
-  const Doubles2 estimate =
-      detail::select(known, detail::lanes_sqrt(squared), detail::broadcast(kUnknown));
+  const Doubles2 estimate = detail::lanes_sqrt(squared);
   const Doubles2 rounded = detail::as_float(estimate);
   const Masks2 in_range =
       detail::both(squared > detail::broadcast(1e-200), squared < detail::broadcast(1e200));
@@ -98,8 +98,7 @@ detail::Floats2 ground_distances(Doubles2 x, Doubles2 y, Masks2 known) {
       detail::both(detail::as_float(estimate * detail::broadcast(1.0 - 1e-15)) == rounded,
                    detail::as_float(estimate * detail::broadcast(1.0 + 1e-15)) == rounded);
   detail::Floats2 range = detail::narrowed(rounded);
-  const int settled =
-      detail::lane_bits(detail::both(in_range, same_float)) | (~detail::lane_bits(known) & 3);
+  const int settled = detail::lane_bits(detail::both(in_range, same_float)) | (~known & 3);
   if (settled == 3)
     return range;
   for (int lane = 0; lane < 2; ++lane)
@@ -144,23 +143,28 @@ private:
     return 1;
   }
 
-  // Unknown lanes compute nonsense, which the known mask replaces by +inf.
+  // Both lanes are computed and stored; an unknown one computes nonsense, which is then
+  // overwritten with +inf (rarer than a select on every value).
   std::uint64_t convert_pair(const float* disparity, int u) const {
     const Doubles2 d = detail::load_widened(disparity + u);
-    const Masks2 known = detail::both(d > Doubles2{}, d <= detail::broadcast(kLargest));
-    const int known_bits = detail::lane_bits(known);
-    if (known_bits == 0)
+    const int known =
+        detail::lane_bits(detail::both(d > Doubles2{}, d <= detail::broadcast(kLargest)));
+    if (known == 0)
       return 0;
     const Doubles2 columns{static_cast<double>(u), static_cast<double>(u + 1)};
     const Doubles2 scale = detail::broadcast(baseline_) / d;
     Doubles2 level[3];
     for (int axis = 0; axis < 3; ++axis) {
       level[axis] = origin_[axis] + scale * (direction_[axis] + columns * step_[axis]);
-      store_floats(rows_[axis] + u, detail::narrowed(detail::select(known, level[axis],
-                                                                    detail::broadcast(kUnknown))));
+      store_floats(rows_[axis] + u, detail::narrowed(level[axis]));
     }
     store_floats(rows_[3] + u, ground_distances(level[0], level[1], known));
-    return static_cast<std::uint64_t>((known_bits & 1) + (known_bits >> 1));
+    if (known == 3)
+      return 2;
+    const int unknown = known == 1 ? u + 1 : u;
+    for (float* row : rows_)
+      row[unknown] = kUnknown;
+    return 1;
   }
 
   static constexpr double kLargest = std::numeric_limits<float>::max();
