@@ -42,7 +42,8 @@ void check_images_fit(ImageView<const std::uint8_t> left, ImageView<const std::u
 Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<float>& disparity,
                                const StereoRig& rig, const NavigationOptions& options,
                                std::pmr::memory_resource* memory) {
-  Image<float> seeable = to_image(ImageView<const float>(disparity), memory);
+  Image<float> seeable(disparity.width(), disparity.height(), 1,
+                       std::numeric_limits<float>::infinity(), memory);
   if (seeable.empty())
     return seeable;
   const Image<std::uint8_t> textured =
@@ -57,8 +58,8 @@ Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<f
     // The level ground's disparity is affine along a row.
     const double first_d = ground.disparity(0.0, y);
     const double rise = ground.disparity(last, y) - first_d;
-    detail::hide_unseeable(textured.row(y), fractions.data(), first_d, rise, left.width(),
-                           seeable.row(y));
+    detail::keep_seeable(textured.row(y), fractions.data(), first_d, rise, left.width(),
+                         disparity.row(y), seeable.row(y));
   }
   return seeable;
 }

@@ -13,18 +13,19 @@ double ground_disparity(const double* fractions, double first_d, double rise, in
   return first_d + rise * fractions[x];
 }
 
-void hide_tested(const std::uint8_t* seen, const double* fractions, double first_d, double rise,
-                 int begin, int end, float* out) {
+void keep_tested(const std::uint8_t* seen, const double* fractions, double first_d, double rise,
+                 int begin, int end, const float* disparity, float* out) {
   for (int x = begin; x < end; ++x) {
     const double ground_d = ground_disparity(fractions, first_d, rise, x);
-    if (seen[x] == 0 || ground_d <= 0.0 || x < ground_d)
-      out[x] = kHidden;
+    if (seen[x] != 0 && !(ground_d <= 0.0 || x < ground_d))
+      out[x] = disparity[x];
   }
 }
 
-void hide_featureless(const std::uint8_t* seen, int begin, int end, float* out) {
+void keep_textured(const std::uint8_t* seen, int begin, int end, const float* disparity,
+                   float* out) {
   for (int x = begin; x < end; ++x)
-    out[x] = seen[x] == 0 ? kHidden : out[x];
+    out[x] = seen[x] != 0 ? disparity[x] : kHidden;
 }
 
 // The first column at or after `limit` (a positive finite value), at most `width`.
@@ -62,25 +63,24 @@ std::pmr::vector<double> column_fractions(int width, double span,
 // smaller one see past the right image's edge, columns right of the larger one inside it, and
 // only the columns between, some |rise| of them, need the test itself. A row that is neither
 // wholly below nor wholly above the horizon is tested throughout.
-void hide_unseeable(const std::uint8_t* seen, const double* fractions, double first_d, double rise,
-                    int width, float* out) {
+void keep_seeable(const std::uint8_t* seen, const double* fractions, double first_d, double rise,
+                  int width, const float* disparity, float* out) {
   if (width <= 0)
     return;
   const double at_first = ground_disparity(fractions, first_d, rise, 0);
   const double at_last = ground_disparity(fractions, first_d, rise, width - 1);
   if (!std::isfinite(at_first) || !std::isfinite(at_last))
-    return hide_tested(seen, fractions, first_d, rise, 0, width, out);
+    return keep_tested(seen, fractions, first_d, rise, 0, width, disparity, out);
   const double lowest = std::min(at_first, at_last);
   const double highest = std::max(at_first, at_last);
   if (highest <= 0.0)
-    return std::fill(out, out + width, kHidden);
+    return;
   if (lowest <= 0.0)
-    return hide_tested(seen, fractions, first_d, rise, 0, width, out);
+    return keep_tested(seen, fractions, first_d, rise, 0, width, disparity, out);
   const int past_edge = first_column_from(lowest, width);
   const int in_view = std::max(past_edge, first_column_from(highest, width));
-  std::fill(out, out + past_edge, kHidden);
-  hide_tested(seen, fractions, first_d, rise, past_edge, in_view, out);
-  hide_featureless(seen, in_view, width, out);
+  keep_tested(seen, fractions, first_d, rise, past_edge, in_view, disparity, out);
+  keep_textured(seen, in_view, width, disparity, out);
 }
 
 } // namespace marsokhod::nav::detail

@@ -30,10 +30,11 @@ private:
 std::pmr::vector<double> column_fractions(int width, double span,
                                           std::pmr::memory_resource* memory);
 
-/// Sets out[x] = +inf where seen[x] is 0, or where the level ground's disparity
+/// Copies disparity[x] to out[x] (which holds +inf) where seen[x] is not 0 and the level
+/// ground's disparity
 ///   ground_d = first_d + rise * fractions[x]
-/// is not positive or exceeds the column (x < ground_d): exactly the pixels that test marks.
-void hide_unseeable(const std::uint8_t* seen, const double* fractions, double first_d, double rise,
-                    int width, float* out);
+/// is neither zero or less nor more than the column (ground_d <= 0 || x < ground_d fails).
+void keep_seeable(const std::uint8_t* seen, const double* fractions, double first_d, double rise,
+                  int width, const float* disparity, float* out);
 
 } // namespace marsokhod::nav::detail

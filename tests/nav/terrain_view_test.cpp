@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-// hide_unseeable decides whole runs of a row from its two ends; it must mark exactly the pixels
-// the per-pixel test marks, for rising and falling rows, rows across the horizon and the sky.
+// keep_seeable decides whole runs of a row from its two ends; it must keep exactly the pixels
+// the per-pixel test keeps, for rising and falling rows, rows across the horizon and the sky.
 
 namespace marsokhod::nav::detail {
 namespace {
@@ -33,7 +33,7 @@ double unit(std::mt19937_64& random) {
   return static_cast<double>(random() >> 11) * 0x1.0p-53;
 }
 
-TEST(HideUnseeable, MarksWhatThePerPixelTestMarks) {
+TEST(KeepSeeable, KeepsWhatThePerPixelTestKeeps) {
   std::mt19937_64 random(9127);
   for (int trial = 0; trial < 4000; ++trial) {
     const int width = 1 + static_cast<int>(random() % 300);
@@ -46,6 +46,8 @@ TEST(HideUnseeable, MarksWhatThePerPixelTestMarks) {
       first_d = static_cast<double>(random() % 40);
     if (trial % 13 == 0)
       rise = static_cast<double>(random() % 9) - 4.0;
+    if (trial % 17 == 0)
+      first_d = std::numeric_limits<double>::quiet_NaN();
     std::vector<std::uint8_t> seen(static_cast<std::size_t>(width));
     std::vector<float> out(static_cast<std::size_t>(width));
     for (int x = 0; x < width; ++x) {
@@ -55,9 +57,10 @@ TEST(HideUnseeable, MarksWhatThePerPixelTestMarks) {
     const std::vector<float> want = tested_per_pixel(seen, first_d, rise, out);
     const std::pmr::vector<double> fractions =
         column_fractions(width, std::max(width - 1.0, 1.0), std::pmr::get_default_resource());
-    hide_unseeable(seen.data(), fractions.data(), first_d, rise, width, out.data());
+    std::vector<float> kept(static_cast<std::size_t>(width), kInf);
+    keep_seeable(seen.data(), fractions.data(), first_d, rise, width, out.data(), kept.data());
     for (int x = 0; x < width; ++x)
-      ASSERT_EQ(std::bit_cast<std::uint32_t>(out[x]), std::bit_cast<std::uint32_t>(want[x]))
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(kept[x]), std::bit_cast<std::uint32_t>(want[x]))
           << trial << ": x " << x << " of " << width << ", first " << first_d << ", rise " << rise;
   }
 }
