@@ -37,22 +37,40 @@ void row_span(const std::uint8_t* row, int width, std::uint8_t* highest, std::ui
   }
 }
 
+// The spans of the last 2 * kRadius + 1 rows, row r in slot r % kRows: all that a row of the
+// mask needs, without two whole images of spans.
+class SpanRows {
+public:
+  static constexpr int kRows = 2 * kRadius + 1;
+
+  SpanRows(int width, std::pmr::memory_resource* memory)
+      : width_(width), highest_(static_cast<std::size_t>(kRows) * width, 0, memory),
+        lowest_(static_cast<std::size_t>(kRows) * width, 0, memory) {}
+  void compute(const std::uint8_t* row, int r) { row_span(row, width_, highest(r), lowest(r)); }
+  std::uint8_t* highest(int r) { return highest_.data() + slot(r); }
+  std::uint8_t* lowest(int r) { return lowest_.data() + slot(r); }
+
+private:
+  std::size_t slot(int r) const { return static_cast<std::size_t>(r % kRows) * width_; }
+  int width_;
+  std::pmr::vector<std::uint8_t> highest_;
+  std::pmr::vector<std::uint8_t> lowest_;
+};
+
 // Row y of the mask: the spans of rows y - kRadius..y + kRadius (clamped; a repeated row changes
 // no maximum or minimum) against the threshold, in one pass of byte lanes. The span never goes
 // below zero, so it fits a byte.
-void mark_textured(const Image<std::uint8_t>& highest, const Image<std::uint8_t>& lowest, int y,
-                   int grey_range, std::uint8_t* out) {
-  const int width = highest.width();
-  const int last = highest.height() - 1;
+void mark_textured(SpanRows& spans, int y, int height, int width, int grey_range,
+                   std::uint8_t* out) {
   if (grey_range > 255)
     return;
   const auto threshold = static_cast<std::uint8_t>(std::max(grey_range, 0));
-  const std::uint8_t* h[2 * kRadius + 1];
-  const std::uint8_t* l[2 * kRadius + 1];
+  const std::uint8_t* h[SpanRows::kRows];
+  const std::uint8_t* l[SpanRows::kRows];
   for (int dy = -kRadius; dy <= kRadius; ++dy) {
-    const int row = std::clamp(y + dy, 0, last);
-    h[dy + kRadius] = highest.row(row);
-    l[dy + kRadius] = lowest.row(row);
+    const int row = std::clamp(y + dy, 0, height - 1);
+    h[dy + kRadius] = spans.highest(row);
+    l[dy + kRadius] = spans.lowest(row);
   }
   for (int x = 0; x < width; ++x) {
     const std::uint8_t hi = std::max({h[0][x], h[1][x], h[2][x], h[3][x], h[4][x]});
@@ -67,13 +85,14 @@ Image<std::uint8_t> textured_pixels(ImageView<const std::uint8_t> image, int gre
                                     std::pmr::memory_resource* memory) {
   const int width = image.width();
   const int height = image.height();
-  Image<std::uint8_t> highest(width, height, 1, 0, memory);
-  Image<std::uint8_t> lowest(width, height, 1, 0, memory);
-  for (int y = 0; y < height; ++y)
-    row_span(image.row(y), width, highest.row(y), lowest.row(y));
   Image<std::uint8_t> textured(width, height, 1, 0, memory);
-  for (int y = 0; y < height; ++y)
-    mark_textured(highest, lowest, y, grey_range, textured.row(y));
+  SpanRows spans(width, memory);
+  int spanned = 0;
+  for (int y = 0; y < height; ++y) {
+    for (; spanned <= std::min(height - 1, y + kRadius); ++spanned)
+      spans.compute(image.row(spanned), spanned);
+    mark_textured(spans, y, height, width, grey_range, textured.row(y));
+  }
   return textured;
 }
 
