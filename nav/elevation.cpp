@@ -1,6 +1,7 @@
 #include "marsokhod/nav/elevation.hpp"
 
 #include "path_lanes.hpp"
+#include "terrain_rounding.hpp"
 #include "work_report.hpp"
 
 #include <fmt/format.h>
@@ -89,16 +90,9 @@ void store_floats(float* to, detail::Floats2 lanes) {
 // ground_distance() of two lanes, hypot only where a known lane needs it (bit i of `known` set
 // for a known lane i; the others may be nonsense).
 detail::Floats2 ground_distances(Doubles2 x, Doubles2 y, int known) {
-  const Doubles2 squared = x * x + y * y;
-  const Doubles2 estimate = detail::lanes_sqrt(squared);
-  const Doubles2 rounded = detail::as_float(estimate);
-  const Masks2 in_range =
-      detail::both(squared > detail::broadcast(1e-200), squared < detail::broadcast(1e200));
-  const Masks2 same_float =
-      detail::both(detail::as_float(estimate * detail::broadcast(1.0 - 1e-15)) == rounded,
-                   detail::as_float(estimate * detail::broadcast(1.0 + 1e-15)) == rounded);
-  detail::Floats2 range = detail::narrowed(rounded);
-  const int settled = detail::lane_bits(detail::both(in_range, same_float)) | (~known & 3);
+  const Doubles2 estimate = detail::lanes_sqrt(x * x + y * y);
+  detail::Floats2 range = detail::narrowed(estimate);
+  const int settled = detail::settled_roundings(estimate) | (~known & 3);
   if (settled == 3)
     return range;
   for (int lane = 0; lane < 2; ++lane)

@@ -20,6 +20,8 @@ namespace marsokhod::nav::detail {
 using Doubles2 = double __attribute__((vector_size(16)));
 using Masks2 = std::int64_t __attribute__((vector_size(16)));
 using Floats2 = float __attribute__((vector_size(8)));
+using Words4 = std::uint32_t __attribute__((vector_size(16)));
+using Ints4 = std::int32_t __attribute__((vector_size(16)));
 
 /// Two floats from `from`, widened exactly to double.
 inline Doubles2 load_widened(const float* from) {
@@ -102,6 +104,16 @@ inline int lane_bits(Masks2 mask) {
   return _mm_movemask_pd(as_m128d(mask));
 #else
   return (mask[0] != 0 ? 1 : 0) | (mask[1] != 0 ? 2 : 0);
+#endif
+}
+
+/// Bit i set where 32-bit lane i of the mask is set.
+inline int lane_bits(Ints4 mask) {
+#ifdef __SSE2__
+  return _mm_movemask_ps(std::bit_cast<__m128>(mask));
+#else
+  return (mask[0] != 0 ? 1 : 0) | (mask[1] != 0 ? 2 : 0) | (mask[2] != 0 ? 4 : 0) |
+         (mask[3] != 0 ? 8 : 0);
 #endif
 }
 

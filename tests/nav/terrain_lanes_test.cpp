@@ -1,3 +1,5 @@
+#include "../../nav/terrain_rounding.hpp"
+
 #include "marsokhod/nav/elevation.hpp"
 
 #include <gtest/gtest.h>
@@ -85,6 +87,38 @@ TEST(ReconstructTerrain, MatchesThePlainExpressionBitForBit) {
     }
     EXPECT_EQ(terrain.known_pixels, known);
   }
+}
+
+// The plain test ground_distance() makes of a root in range.
+bool rounding_settled(double estimate) {
+  const auto rounded = static_cast<float>(estimate);
+  return static_cast<float>(estimate * (1.0 - 1e-15)) == rounded &&
+         static_cast<float>(estimate * (1.0 + 1e-15)) == rounded;
+}
+
+// Roots near the float rounding midpoints, powers of two and the ends of the float range.
+TEST(SettledRoundings, ImpliesThePlainTest) {
+  std::mt19937_64 random(8093);
+  int settled_near_midpoints = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const int exponent = static_cast<int>(random() % 300) - 150;
+    const double base =
+        std::ldexp(1.0 + static_cast<double>(random() % (1U << 23)) * 0x1p-23, exponent);
+    const std::int64_t offset = static_cast<std::int64_t>(random() % 81) - 40;
+    const std::uint64_t midpoint =
+        std::bit_cast<std::uint64_t>(base) + (trial % 3 == 0 ? 0 : (1ULL << 28));
+    const double a = std::bit_cast<double>(midpoint + static_cast<std::uint64_t>(offset));
+    const double b = std::bit_cast<double>(random() >> 1);
+    const int bits = detail::settled_roundings(detail::Doubles2{a, b});
+    if ((bits & 1) != 0) {
+      ASSERT_TRUE(rounding_settled(a)) << a;
+      settled_near_midpoints += 1;
+    }
+    if ((bits & 2) != 0) {
+      ASSERT_TRUE(rounding_settled(b)) << b;
+    }
+  }
+  EXPECT_GT(settled_near_midpoints, 10000);
 }
 
 } // namespace
