@@ -118,8 +118,10 @@ public:
   std::uint64_t convert(const float* disparity, int width) const {
     std::uint64_t converted = 0;
     int u = 0;
-    for (; u + 1 < width; u += 2)
-      converted += convert_pair(disparity, u);
+    // Columns as doubles, counted up exactly rather than converted at every pair.
+    Doubles2 columns{0.0, 1.0};
+    for (; u + 1 < width; u += 2, columns += detail::broadcast(2.0))
+      converted += convert_pair(disparity, u, columns);
     if (u < width)
       converted += convert_one(disparity[u], u);
     return converted;
@@ -139,13 +141,12 @@ private:
 
   // Both lanes are computed and stored; an unknown one computes nonsense, which is then
   // overwritten with +inf (rarer than a select on every value).
-  std::uint64_t convert_pair(const float* disparity, int u) const {
+  std::uint64_t convert_pair(const float* disparity, int u, Doubles2 columns) const {
     const Doubles2 d = detail::load_widened(disparity + u);
     const int known =
         detail::lane_bits(detail::both(d > Doubles2{}, d <= detail::broadcast(kLargest)));
     if (known == 0)
       return 0;
-    const Doubles2 columns{static_cast<double>(u), static_cast<double>(u + 1)};
     const Doubles2 scale = detail::broadcast(baseline_) / d;
     Doubles2 level[3];
     for (int axis = 0; axis < 3; ++axis) {

@@ -25,9 +25,15 @@ using Ints4 = std::int32_t __attribute__((vector_size(16)));
 
 /// Two floats from `from`, widened exactly to double.
 inline Doubles2 load_widened(const float* from) {
+#ifdef __SSE2__
+  // One 8-byte load and one conversion; the generic form converts lane by lane.
+  return std::bit_cast<Doubles2>(
+      _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(from)))));
+#else
   Floats2 floats;
   std::memcpy(&floats, from, sizeof floats);
   return __builtin_convertvector(floats, Doubles2);
+#endif
 }
 
 inline Doubles2 load_doubles(const double* from) {
