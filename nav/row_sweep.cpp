@@ -221,6 +221,8 @@ RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoi
   widen_terrain(terrain, start.y, whole, buffers.below());
   widen_costs(sweep.cost.row(start.y), width, buffers.below(), buffers.reached());
   Span reach{start.x, start.x + 1};
+  // Only the columns next to reached pixels are widened and relaxed: elsewhere the buffers keep
+  // older rows, whose values only ever meet unreached costs.
   for (int y = start.y - 1; y >= first_row; --y) {
     const Span columns{std::max(reach.begin - 1, 0), std::min(reach.end + 1, width)};
     const Span read{columns.begin, std::min(columns.end + 1, width)};
