@@ -1,15 +1,21 @@
 #include "marsokhod/nav/elevation.hpp"
 
+#include "path_lanes.hpp"
+#include "terrain_rounding.hpp"
 #include "work_report.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
 namespace marsokhod::nav {
 namespace {
+
+using detail::Doubles2;
+using detail::Masks2;
 
 constexpr float kUnknown = std::numeric_limits<float>::infinity();
 
@@ -62,6 +68,110 @@ float ground_distance(double x, double y) {
   return static_cast<float>(std::hypot(x, y));
 }
 
+// The level point seen at column u through a row's direction, as the scalar expression
+//   origin + (B / d) * (row_direction + u * column_step)
+// evaluates it, and its ground distance; false where the disparity gives no point.
+bool level_point(const PixelGeometry& geometry, const Eigen::Vector3d& row_direction,
+                 double baseline, int u, float d, float* point, float* range) {
+  if (!(d > 0.0F) || !std::isfinite(d)) // NaN fails the first test
+    return false;
+  const Eigen::Vector3d level =
+      geometry.origin + (baseline / d) * (row_direction + u * geometry.column_step);
+  for (int axis = 0; axis < 3; ++axis)
+    point[axis] = static_cast<float>(level[axis]);
+  *range = ground_distance(level.x(), level.y());
+  return true;
+}
+
+void store_floats(float* to, detail::Floats2 lanes) {
+  std::memcpy(to, &lanes, sizeof lanes);
+}
+
+// ground_distance() of two lanes, hypot only where a known lane needs it (bit i of `known` set
+// for a known lane i; the others may be nonsense).
+detail::Floats2 ground_distances(Doubles2 x, Doubles2 y, int known) {
+  const Doubles2 estimate = detail::lanes_sqrt(x * x + y * y);
+  detail::Floats2 range = detail::narrowed(estimate);
+  const int settled = detail::settled_roundings(estimate) | (~known & 3);
+  if (settled == 3)
+    return range;
+  for (int lane = 0; lane < 2; ++lane)
+    if ((settled & (1 << lane)) == 0)
+      range[lane] = ground_distance(x[lane], y[lane]);
+  return range;
+}
+
+// One row of the terrain, two columns at a time: every operation the one the scalar
+// expression does, in the same order, so each lane rounds as level_point() would.
+class RowConverter {
+public:
+  RowConverter(const PixelGeometry& geometry, const Eigen::Vector3d& row_direction, double baseline,
+               float* const (&rows)[4])
+      : geometry_(geometry), row_direction_(row_direction), baseline_(baseline), rows_(rows) {
+    for (int axis = 0; axis < 3; ++axis) {
+      origin_[axis] = detail::broadcast(geometry.origin[axis]);
+      direction_[axis] = detail::broadcast(row_direction[axis]);
+      step_[axis] = detail::broadcast(geometry.column_step[axis]);
+    }
+  }
+
+  std::uint64_t convert(const float* disparity, int width) const {
+    std::uint64_t converted = 0;
+    int u = 0;
+    // Columns as doubles, counted up exactly rather than converted at every pair.
+    Doubles2 columns{0.0, 1.0};
+    for (; u + 1 < width; u += 2, columns += detail::broadcast(2.0))
+      converted += convert_pair(disparity, u, columns);
+    if (u < width)
+      converted += convert_one(disparity[u], u);
+    return converted;
+  }
+
+private:
+  std::uint64_t convert_one(float d, int u) const {
+    float point[3];
+    float range = 0.0F;
+    if (!level_point(geometry_, row_direction_, baseline_, u, d, point, &range))
+      return 0;
+    for (int axis = 0; axis < 3; ++axis)
+      rows_[axis][u] = point[axis];
+    rows_[3][u] = range;
+    return 1;
+  }
+
+  // Both lanes are computed and stored; an unknown one computes nonsense, which is then
+  // overwritten with +inf (rarer than a select on every value).
+  std::uint64_t convert_pair(const float* disparity, int u, Doubles2 columns) const {
+    const Doubles2 d = detail::load_widened(disparity + u);
+    const int known =
+        detail::lane_bits(detail::both(d > Doubles2{}, d <= detail::broadcast(kLargest)));
+    if (known == 0)
+      return 0;
+    const Doubles2 scale = detail::broadcast(baseline_) / d;
+    Doubles2 level[3];
+    for (int axis = 0; axis < 3; ++axis) {
+      level[axis] = origin_[axis] + scale * (direction_[axis] + columns * step_[axis]);
+      store_floats(rows_[axis] + u, detail::narrowed(level[axis]));
+    }
+    store_floats(rows_[3] + u, ground_distances(level[0], level[1], known));
+    if (known == 3)
+      return 2;
+    const int unknown = known == 1 ? u + 1 : u;
+    for (float* row : rows_)
+      row[unknown] = kUnknown;
+    return 1;
+  }
+
+  static constexpr double kLargest = std::numeric_limits<float>::max();
+  const PixelGeometry& geometry_;
+  const Eigen::Vector3d& row_direction_;
+  double baseline_;
+  float* const (&rows_)[4];
+  Doubles2 origin_[3];
+  Doubles2 direction_[3];
+  Doubles2 step_[3];
+};
+
 } // namespace
 
 template <class Meter>
@@ -81,24 +191,10 @@ TerrainPoints reconstruct_terrain(ImageView<const float> disparity, const Stereo
   const double baseline = rig.baseline_m();
   for (int v = 0; v < height; ++v) {
     const Eigen::Vector3d row_direction = geometry.row_direction(v);
-    const float* d_row = disparity.row(v);
-    float* x_row = terrain.forward.row(v);
-    float* y_row = terrain.left.row(v);
-    float* z_row = terrain.elevation.row(v);
-    float* r_row = terrain.range.row(v);
-    std::uint64_t converted = 0;
-    for (int u = 0; u < width; ++u) {
-      const float d = d_row[u];
-      if (!(d > 0.0F) || !std::isfinite(d)) // NaN fails the first test
-        continue;
-      const Eigen::Vector3d point =
-          geometry.origin + (baseline / d) * (row_direction + u * geometry.column_step);
-      x_row[u] = static_cast<float>(point.x());
-      y_row[u] = static_cast<float>(point.y());
-      z_row[u] = static_cast<float>(point.z());
-      r_row[u] = ground_distance(point.x(), point.y());
-      ++converted;
-    }
+    float* const rows[4] = {terrain.forward.row(v), terrain.left.row(v), terrain.elevation.row(v),
+                            terrain.range.row(v)};
+    const std::uint64_t converted =
+        RowConverter(geometry, row_direction, baseline, rows).convert(disparity.row(v), width);
     detail::report(meter, Work::range_pixel, converted);
     detail::report(meter, Work::elevation_pixel, converted);
     terrain.known_pixels += converted;

@@ -1,5 +1,6 @@
 #include "marsokhod/nav/navigation.hpp"
 
+#include "terrain_view.hpp"
 #include "work_report.hpp"
 
 #include <fmt/format.h>
@@ -41,7 +42,8 @@ void check_images_fit(ImageView<const std::uint8_t> left, ImageView<const std::u
 Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<float>& disparity,
                                const StereoRig& rig, const NavigationOptions& options,
                                std::pmr::memory_resource* memory) {
-  Image<float> seeable = to_image(ImageView<const float>(disparity), memory);
+  Image<float> seeable(disparity.width(), disparity.height(), 1,
+                       std::numeric_limits<float>::infinity(), memory);
   if (seeable.empty())
     return seeable;
   const Image<std::uint8_t> textured =
@@ -50,17 +52,14 @@ Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<f
           : Image<std::uint8_t>(left.width(), left.height(), 1, 255, memory);
   const double last = left.width() - 1.0;
   const double span = std::max(last, 1.0);
+  const std::pmr::vector<double> fractions = detail::column_fractions(left.width(), span, memory);
+  const detail::LevelGround ground(rig, options.attitude);
   for (int y = 0; y < left.height(); ++y) {
     // The level ground's disparity is affine along a row.
-    const double first_d = rig.ground_disparity(0.0, y, options.attitude);
-    const double rise = rig.ground_disparity(last, y, options.attitude) - first_d;
-    const std::uint8_t* seen = textured.row(y);
-    float* out = seeable.row(y);
-    for (int x = 0; x < left.width(); ++x) {
-      const double ground_d = first_d + rise * (x / span);
-      if (seen[x] == 0 || ground_d <= 0.0 || x < ground_d)
-        out[x] = std::numeric_limits<float>::infinity();
-    }
+    const double first_d = ground.disparity(0.0, y);
+    const double rise = ground.disparity(last, y) - first_d;
+    detail::keep_seeable(textured.row(y), fractions.data(), first_d, rise, left.width(),
+                         disparity.row(y), seeable.row(y));
   }
   return seeable;
 }

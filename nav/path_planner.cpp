@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -22,27 +23,64 @@ double wrapped_radians(double angle) {
   return std::remainder(angle, 2.0 * std::numbers::pi);
 }
 
+// The largest float not above `limit`: for a float r, double(r) > limit exactly when
+// r > float_floor(limit), so a row can be tested in float lanes.
+float float_floor(double limit) {
+  const auto rounded = static_cast<float>(limit);
+  if (static_cast<double>(rounded) <= limit)
+    return rounded;
+  return std::nextafter(rounded, -std::numeric_limits<float>::infinity());
+}
+
+// The smallest float not below `limit`: for a float r, double(r) >= limit exactly when
+// r >= float_ceil(limit).
+float float_ceil(double limit) {
+  const auto rounded = static_cast<float>(limit);
+  if (static_cast<double>(rounded) >= limit)
+    return rounded;
+  return std::nextafter(rounded, std::numeric_limits<float>::infinity());
+}
+
+// Whether any pixel of a row lies within the start's box, whatever its zone: few rows do, and
+// the test runs in float lanes without a branch.
+bool row_reaches_start_box(const float* range, const float* left, int width, float max_range,
+                           float max_offset) {
+  int inside = 0;
+  for (int x = 0; x < width; ++x) {
+    const int near = range[x] > max_range ? 0 : 1;
+    const int central = std::abs(left[x]) > max_offset ? 0 : 1;
+    inside |= near & central;
+  }
+  return inside != 0;
+}
+
 // The nearest traversable pixel straight in front of the rover; among equals the one nearest
 // the heading line, then the lowest and leftmost (a fixed order, so ties are reproducible).
 std::optional<PixelPoint> find_start(const TerrainPoints& terrain, const ZoneMap& zones,
                                      const PlannerOptions& options) {
+  const float max_range = float_floor(options.start_max_m);
+  const float max_offset = float_floor(options.start_lateral_m);
   std::optional<PixelPoint> best;
   double best_range = 0.0;
   double best_offset = 0.0;
-  for (int y = terrain.height() - 1; y >= 0; --y)
+  for (int y = terrain.height() - 1; y >= 0; --y) {
+    if (!row_reaches_start_box(terrain.range.row(y), terrain.left.row(y), terrain.width(),
+                               max_range, max_offset))
+      continue;
+    const float* ranges = terrain.range.row(y);
+    const float* lefts = terrain.left.row(y);
     for (int x = 0; x < terrain.width(); ++x) {
-      if (!zones.traversable(x, y))
+      if (std::abs(lefts[x]) > max_offset || ranges[x] > max_range || !zones.traversable(x, y))
         continue;
-      const double range = terrain.range(x, y);
-      const double offset = std::abs(terrain.left(x, y));
-      if (offset > options.start_lateral_m || range > options.start_max_m)
-        continue;
+      const double range = ranges[x];
+      const double offset = std::abs(lefts[x]);
       if (!best || range < best_range || (range == best_range && offset < best_offset)) {
         best = PixelPoint{x, y};
         best_range = range;
         best_offset = offset;
       }
     }
+  }
   return best;
 }
 
@@ -67,14 +105,38 @@ struct Destination {
   double score = 0.0;
 };
 
+// Whether any reached pixel of a row lies in the target band; most swept rows hold none, and
+// the test runs in float lanes without a branch.
+bool row_reaches_band(const float* cost, const float* range, int width, float nearest,
+                      float farthest) {
+  int inside = 0;
+  for (int x = 0; x < width; ++x) {
+    const int reached = std::abs(cost[x]) <= std::numeric_limits<float>::max() ? 1 : 0;
+    const int beyond_nearest = range[x] >= nearest ? 1 : 0;
+    const int before_farthest = range[x] <= farthest ? 1 : 0;
+    inside |= reached & beyond_nearest & before_farthest;
+  }
+  return inside != 0;
+}
+
+// The reachable pixel of the target band with the lowest score. The heading penalty is never
+// negative, so a pixel whose cost alone reaches the best score so far cannot beat it and needs
+// no bearing.
 std::optional<Destination> choose_destination(const TerrainPoints& terrain, const RowSweep& sweep,
                                               const PlannerOptions& options) {
   const double heading = options.heading_deg * std::numbers::pi / 180.0;
+  const float nearest = float_ceil(options.target_min_m);
+  const float farthest = float_floor(options.target_max_m);
   std::optional<Destination> best;
-  for (int y = sweep.first_row; y <= sweep.start.y; ++y)
+  for (int y = sweep.first_row; y <= sweep.start.y; ++y) {
+    const float* costs = sweep.cost.row(y);
+    if (!row_reaches_band(costs, terrain.range.row(y), terrain.width(), nearest, farthest))
+      continue;
     for (int x = 0; x < terrain.width(); ++x) {
-      const double cost = sweep.cost(x, y);
+      const double cost = costs[x];
       if (!std::isfinite(cost) || !in_target_band(terrain, options, x, y))
+        continue;
+      if (best && cost >= best->score)
         continue;
       const double bearing = std::atan2(terrain.left(x, y), terrain.forward(x, y));
       const double score =
@@ -82,6 +144,7 @@ std::optional<Destination> choose_destination(const TerrainPoints& terrain, cons
       if (!best || score < best->score)
         best = Destination{PixelPoint{x, y}, cost, score};
     }
+  }
   return best;
 }
 

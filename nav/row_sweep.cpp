@@ -1,3 +1,4 @@
+#include "path_lanes.hpp"
 #include "work_report.hpp"
 
 #include "marsokhod/nav/path_planner.hpp"
@@ -8,41 +9,183 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace marsokhod::nav {
 namespace {
 
+using detail::Doubles2;
+using detail::Masks2;
+
 constexpr float kUnreached = std::numeric_limits<float>::infinity();
+constexpr double kUnreachedWide = std::numeric_limits<double>::infinity();
 
-// Straight ahead first, so that exact ties keep the path straight.
-constexpr int kSteps[3] = {0, -1, 1};
+// Pixels of margin before column 0 and after the last column: the diagonal neighbours of the
+// edge columns, and the second lane of an odd last column, read margin rather than a branch.
+constexpr int kMargin = 1;
+constexpr int kPadding = 3;
 
-// One row of the terrain, as the sweep reads it.
-struct TerrainRow {
-  const float* forward;
-  const float* left;
-  const float* elevation;
-
-  TerrainRow(const TerrainPoints& terrain, int y)
-      : forward(terrain.forward.row(y)), left(terrain.left.row(y)),
-        elevation(terrain.elevation.row(y)) {}
+// Columns begin..end - 1 of a row.
+struct Span {
+  int begin = 0;
+  int end = 0;
 };
 
-// The weight of the edge from pixel `from` of row `below` to pixel `to` of row `here`, or +inf
-// when its ends lie farther apart than weights.max_edge_m.
-double edge_weight(const TerrainRow& below, int from, const TerrainRow& here, int to,
-                   const EdgeWeights& weights, double max_edge_squared) {
-  const double ahead = static_cast<double>(here.forward[to]) - below.forward[from];
-  const double across = static_cast<double>(here.left[to]) - below.left[from];
-  // Metres between neighbouring pixels: the squares can neither overflow nor underflow, so the
-  // plain root is as good as std::hypot and several times cheaper.
-  const double squared = ahead * ahead + across * across;
-  if (squared > max_edge_squared)
-    return kUnreached;
-  const double climb =
-      std::max(0.0, std::abs(static_cast<double>(here.elevation[to]) - below.elevation[from]) -
-                        weights.flat_tolerance_m);
-  return climb + weights.length_weight * std::sqrt(squared);
+// One row of the terrain and its costs, widened to double once instead of once per edge. The
+// margins hold finite ground and unreached costs, so their candidates never win.
+struct WideRow {
+  double* forward;
+  double* left;
+  double* elevation;
+  double* cost;
+};
+
+class SweepBuffers {
+public:
+  SweepBuffers(int width, std::pmr::memory_resource* memory)
+      : stride_(static_cast<std::size_t>(width) + kPadding), values_(8 * stride_, 0.0, memory),
+        reached_(stride_, 0, memory), active_(static_cast<std::size_t>(width) + 1, 0, memory) {
+    below_ = row(0);
+    here_ = row(4);
+    std::fill(below_.cost - kMargin, below_.cost - kMargin + stride_, kUnreachedWide);
+    std::fill(here_.cost - kMargin, here_.cost - kMargin + stride_, kUnreachedWide);
+  }
+  WideRow& below() { return below_; }
+  WideRow& here() { return here_; }
+  std::uint8_t* reached() { return reached_.data() + kMargin; }
+  // One byte more than the row, always 0, for the second lane of an odd last column.
+  std::uint8_t* active() { return active_.data(); }
+  void next_row() { std::swap(below_, here_); }
+
+private:
+  WideRow row(std::size_t first) {
+    double* at = values_.data() + first * stride_ + kMargin;
+    return WideRow{at, at + stride_, at + 2 * stride_, at + 3 * stride_};
+  }
+  std::size_t stride_;
+  std::pmr::vector<double> values_;
+  std::pmr::vector<std::uint8_t> reached_;
+  std::pmr::vector<std::uint8_t> active_;
+  WideRow below_{};
+  WideRow here_{};
+};
+
+void widen_terrain(const TerrainPoints& terrain, int y, Span columns, WideRow& row) {
+  const float* forward = terrain.forward.row(y);
+  const float* left = terrain.left.row(y);
+  const float* elevation = terrain.elevation.row(y);
+  for (int x = columns.begin; x < columns.end; ++x) {
+    row.forward[x] = forward[x];
+    row.left[x] = left[x];
+    row.elevation[x] = elevation[x];
+  }
+}
+
+// Keeps the costs of a finished row for the next one, and which of its pixels were reached.
+void widen_costs(const float* cost, int width, WideRow& row, std::uint8_t* reached) {
+  for (int x = 0; x < width; ++x) {
+    row.cost[x] = cost[x];
+    reached[x] = cost[x] != kUnreached ? 1 : 0;
+  }
+}
+
+// The columns from the first reached pixel of a row to the last (empty when none is).
+Span reached_span(const std::uint8_t* reached, Span columns) {
+  Span span = columns;
+  while (span.begin < span.end && reached[span.begin] == 0)
+    ++span.begin;
+  while (span.end > span.begin && reached[span.end - 1] == 0)
+    --span.end;
+  return span;
+}
+
+// Marks the traversable pixels with known ground and counts the edges into them from reached
+// pixels: the edges the sweep examines. `reached` has a margin of unreached pixels.
+std::uint64_t mark_active(const std::uint8_t* zone, std::ptrdiff_t channels, const float* elevation,
+                          const std::uint8_t* reached, Span columns, std::uint8_t* active) {
+  std::uint64_t relaxations = 0;
+  for (int x = columns.begin; x < columns.end; ++x) {
+    const int known = std::abs(elevation[x]) <= std::numeric_limits<float>::max() ? 1 : 0;
+    const int traversable =
+        zone[x * channels] == static_cast<std::uint8_t>(Zone::traversable) ? 1 : 0;
+    active[x] = static_cast<std::uint8_t>(known & traversable);
+    relaxations += static_cast<std::uint64_t>((known & traversable) *
+                                              (reached[x - 1] + reached[x] + reached[x + 1]));
+  }
+  return relaxations;
+}
+
+struct LaneWeights {
+  Doubles2 length_weight;
+  Doubles2 flat_tolerance;
+  Doubles2 max_edge_squared;
+
+  explicit LaneWeights(const EdgeWeights& weights)
+      : length_weight(detail::broadcast(weights.length_weight)),
+        flat_tolerance(detail::broadcast(weights.flat_tolerance_m)),
+        max_edge_squared(detail::broadcast(weights.max_edge_m * weights.max_edge_m)) {}
+};
+
+// Two lanes of pixels x, x + 1 of the row being swept.
+struct HereLanes {
+  Doubles2 forward;
+  Doubles2 left;
+  Doubles2 elevation;
+};
+
+// The edge weights from pixels xb, xb + 1 of the row below, or +inf where the ends lie farther
+// apart than the limit. The plain root of the squares is as good as std::hypot between
+// neighbouring pixels: they can neither overflow nor underflow.
+Doubles2 edge_weights(const HereLanes& here, const WideRow& below, int xb,
+                      const LaneWeights& weights) {
+  const Doubles2 ahead = here.forward - detail::load_doubles(below.forward + xb);
+  const Doubles2 across = here.left - detail::load_doubles(below.left + xb);
+  const Doubles2 squared = ahead * ahead + across * across;
+  const Doubles2 excess =
+      detail::lanes_abs(here.elevation - detail::load_doubles(below.elevation + xb)) -
+      weights.flat_tolerance;
+  const Doubles2 climb = detail::select(Doubles2{} < excess, excess, Doubles2{});
+  const Doubles2 weight = climb + weights.length_weight * detail::lanes_sqrt(squared);
+  return detail::select(squared > weights.max_edge_squared, detail::broadcast(kUnreachedWide),
+                        weight);
+}
+
+struct Relaxed {
+  Doubles2 cost = detail::broadcast(kUnreachedWide);
+  Masks2 from = Masks2{} + kNoPredecessor;
+
+  // Straight ahead is offered first, so that exact ties keep the path straight; an unreached
+  // neighbour offers +inf (or NaN beyond its ground) and never wins.
+  void offer(const HereLanes& here, const WideRow& below, int x, int step,
+             const LaneWeights& weights) {
+    const Doubles2 candidate =
+        detail::load_doubles(below.cost + x + step) + edge_weights(here, below, x + step, weights);
+    const Masks2 better = candidate < cost;
+    cost = detail::select(better, candidate, cost);
+    from = (better & step) | (~better & from);
+  }
+};
+
+// Pixels with no reached neighbour keep +inf and no predecessor, so only `columns` is relaxed;
+// the second lane may lie one past it, where it finds no reached neighbour either.
+void relax_row(const WideRow& here, const WideRow& below, const std::uint8_t* active, Span columns,
+               int width, const LaneWeights& weights, float* cost, std::int8_t* from) {
+  for (int x = columns.begin; x < columns.end; x += 2) {
+    if ((active[x] | active[x + 1]) == 0)
+      continue;
+    const HereLanes lanes{detail::load_doubles(here.forward + x),
+                          detail::load_doubles(here.left + x),
+                          detail::load_doubles(here.elevation + x)};
+    Relaxed relaxed;
+    for (const int step : {0, -1, 1})
+      relaxed.offer(lanes, below, x, step, weights);
+    const detail::Floats2 narrowed = detail::narrowed(relaxed.cost);
+    for (int lane = 0; lane < 2 && x + lane < width; ++lane)
+      if (active[x + lane] != 0) {
+        cost[x + lane] = narrowed[lane];
+        from[x + lane] = static_cast<std::int8_t>(relaxed.from[lane]);
+      }
+  }
 }
 
 void check_sweep_arguments(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoint start,
@@ -72,35 +215,26 @@ RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoi
                  Image<std::int8_t>(width, terrain.height(), 1, kNoPredecessor, memory), start,
                  first_row};
   sweep.cost(start.x, start.y) = 0.0F;
-  const double max_edge_squared = weights.max_edge_m * weights.max_edge_m;
+  const LaneWeights lane_weights(weights);
+  SweepBuffers buffers(width, memory);
+  const Span whole{0, width};
+  widen_terrain(terrain, start.y, whole, buffers.below());
+  widen_costs(sweep.cost.row(start.y), width, buffers.below(), buffers.reached());
+  Span reach{start.x, start.x + 1};
+  // Only the columns next to reached pixels are widened and relaxed: elsewhere the buffers keep
+  // older rows, whose values only ever meet unreached costs.
   for (int y = start.y - 1; y >= first_row; --y) {
-    const float* below_cost = sweep.cost.row(y + 1);
-    const TerrainRow below(terrain, y + 1);
-    const TerrainRow here(terrain, y);
-    const std::uint8_t* zone = zones.zone.row(y);
-    const std::ptrdiff_t channels = zones.zone.channels();
-    float* cost = sweep.cost.row(y);
-    std::int8_t* from = sweep.from.row(y);
-    std::uint64_t relaxations = 0;
-    for (int x = 0; x < width; ++x) {
-      if (zone[x * channels] != static_cast<std::uint8_t>(Zone::traversable) ||
-          !std::isfinite(here.elevation[x]))
-        continue;
-      double best = kUnreached;
-      for (const int step : kSteps) {
-        const int xb = x + step;
-        if (xb < 0 || xb >= width || below_cost[xb] == kUnreached)
-          continue;
-        ++relaxations;
-        const double candidate =
-            below_cost[xb] + edge_weight(below, xb, here, x, weights, max_edge_squared);
-        if (candidate < best) {
-          best = candidate;
-          from[x] = static_cast<std::int8_t>(step);
-        }
-      }
-      cost[x] = static_cast<float>(best);
-    }
+    const Span columns{std::max(reach.begin - 1, 0), std::min(reach.end + 1, width)};
+    const Span read{columns.begin, std::min(columns.end + 1, width)};
+    widen_terrain(terrain, y, read, buffers.here());
+    const std::uint64_t relaxations =
+        mark_active(zones.zone.row(y), zones.zone.channels(), terrain.elevation.row(y),
+                    buffers.reached(), read, buffers.active());
+    relax_row(buffers.here(), buffers.below(), buffers.active(), columns, width, lane_weights,
+              sweep.cost.row(y), sweep.from.row(y));
+    widen_costs(sweep.cost.row(y), width, buffers.here(), buffers.reached());
+    reach = reached_span(buffers.reached(), columns);
+    buffers.next_row();
     detail::report(meter, Work::path_relaxation, relaxations);
   }
   return sweep;
