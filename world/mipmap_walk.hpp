@@ -89,20 +89,28 @@ std::optional<double> walk(const MaxMipmap& mipmap, const AxisRay& x, const Axis
   for (;;) {
     double t_out = std::min(tx, ty);
     const double low = z0 + dz * (Descending ? std::min(t_out, t_end) : t);
-    const std::size_t index = static_cast<std::size_t>(by) * here->width + bx;
-    if (low <= here->max[index] && !(Gentle && here->slope && here->slope[index] <= gentle)) {
-      if (level > 0) {
+    if (level > 0) {
+      const std::size_t index = static_cast<std::size_t>(by) * here->width + bx;
+      if (low <= here->max[index] && !(Gentle && here->slope && here->slope[index] <= gentle)) {
         --level;
         --here;
         bx = x.child<Parallel>(t, bx, tx, level, here->width);
         by = y.child<Parallel>(t, by, ty, level, here->height);
         continue;
       }
-      const BilinearCell cell{nodes(bx, by), nodes(bx + 1, by), nodes(bx, by + 1),
-                              nodes(bx + 1, by + 1)};
-      if (auto hit = cell.first_crossing(x.at(t) - bx, y.at(t) - by, z0 + dz * t, x.dg, y.dg, dz,
-                                         std::min(t_out, t_end) - t))
-        return t + *hit;
+    } else {
+      // A cell's maximum is its highest corner, the very value level 0 stores: taken from the
+      // corners, which a crossing needs anyway, it costs no cache line of its own. Level 0 has
+      // no slope bounds, so the gentle skip never applies here.
+      const float* near = nodes.row(by) + bx;
+      const float* far = nodes.row(by + 1) + bx;
+      const float highest = std::max(std::max(near[0], near[1]), std::max(far[0], far[1]));
+      if (low <= highest) {
+        const BilinearCell cell{near[0], near[1], far[0], far[1]};
+        if (auto hit = cell.first_crossing(x.at(t) - bx, y.at(t) - by, z0 + dz * t, x.dg, y.dg, dz,
+                                           std::min(t_out, t_end) - t))
+          return t + *hit;
+      }
     }
     // Skip the block. When the step enters another parent block and the ray passes above that
     // parent too, skip the parent as well, and so on up: the ray strides again once it clears
