@@ -88,10 +88,6 @@ emulator::Tick ChanBase::charge(Charge& cached, const Node& node, Instruction op
   return cached.time;
 }
 
-void ChanBase::copy_message(void* destination, const void* source, CopyFn copy) const {
-  copy(destination, source);
-}
-
 void ChanBase::wait_here(Registration& registration, State state, Process& me, void* data,
                          std::size_t bytes) {
   registration.channel_ = this;
@@ -102,52 +98,117 @@ void ChanBase::wait_here(Registration& registration, State state, Process& me, v
   registration_ = &registration;
 }
 
+// The two operations below keep every call on their usual paths a tail call (into
+// Kernel::block, the link port, or a cold helper): with no call to come back from they need no
+// saved registers, no stack frame, and they copy small plain messages inline.
+
 void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy,
                       Registration& registration) {
   auto [kernel, me, node] = here();
-  kernel.consume(charge(output_charge_, node, Instruction::out, bytes));
-  if (external()) [[unlikely]] {
-    output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
-    return;
+  const emulator::Tick time = charge(output_charge_, node, Instruction::out, bytes);
+  if (!kernel.consume_quickly(time)) [[unlikely]] {
+    return output_after_slow_charge(time, message, bytes, copy, registration);
   }
-  if (state_ == State::writer_waiting) {
-    throw std::logic_error("channel " + name_ + " has two outputting processes");
+  output_charged(kernel, me, message, bytes, copy, registration);
+}
+
+void ChanBase::output_after_slow_charge(emulator::Tick time, const void* message, std::size_t bytes,
+                                        CopyFn copy, Registration& registration) {
+  Kernel& kernel = *Kernel::active();
+  kernel.consume(time);
+  output_charged(kernel, *kernel.current(), message, bytes, copy, registration);
+}
+
+inline void ChanBase::output_charged(Kernel& kernel, Process& me, const void* message,
+                                     std::size_t bytes, CopyFn copy, Registration& registration) {
+  if (external()) [[unlikely]] {
+    return output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
+  }
+  if (state_ == State::writer_waiting) [[unlikely]] {
+    two_sides("outputting");
   }
   if (state_ == State::reader_waiting) {
-    copy_message(data_, message, copy);
-    Process* reader = std::exchange(waiter_, nullptr);
-    registration_ = nullptr;
-    state_ = State::empty;
-    kernel.wake(*reader);
+    if (!copy_inline(data_, message, copy)) [[unlikely]] {
+      return complete_with_call(kernel, data_, message, copy);
+    }
+    complete(kernel);
     return;
   }
   wait_here(registration, State::writer_waiting, me, const_cast<void*>(message), bytes);
-  if (alt_ != nullptr) {
-    alt_->guard_ready();
+  if (alt_ != nullptr) [[unlikely]] {
+    return tell_alt_and_block(kernel);
   }
   kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
 }
 
 void ChanBase::input(void* message, std::size_t bytes, CopyFn copy, Registration& registration) {
   auto [kernel, me, node] = here();
-  kernel.consume(charge(input_charge_, node, Instruction::in, bytes));
-  if (external()) [[unlikely]] {
-    input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
-    return;
+  const emulator::Tick time = charge(input_charge_, node, Instruction::in, bytes);
+  if (!kernel.consume_quickly(time)) [[unlikely]] {
+    return input_after_slow_charge(time, message, bytes, copy, registration);
   }
-  if (state_ == State::reader_waiting) {
-    throw std::logic_error("channel " + name_ + " has two inputting processes");
+  input_charged(kernel, me, message, bytes, copy, registration);
+}
+
+void ChanBase::input_after_slow_charge(emulator::Tick time, void* message, std::size_t bytes,
+                                       CopyFn copy, Registration& registration) {
+  Kernel& kernel = *Kernel::active();
+  kernel.consume(time);
+  input_charged(kernel, *kernel.current(), message, bytes, copy, registration);
+}
+
+inline void ChanBase::input_charged(Kernel& kernel, Process& me, void* message, std::size_t bytes,
+                                    CopyFn copy, Registration& registration) {
+  if (external()) [[unlikely]] {
+    return input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
+  }
+  if (state_ == State::reader_waiting) [[unlikely]] {
+    two_sides("inputting");
   }
   if (state_ == State::writer_waiting) {
-    copy_message(message, data_, copy);
-    Process* writer = std::exchange(waiter_, nullptr);
-    registration_ = nullptr;
-    state_ = State::empty;
-    kernel.wake(*writer);
+    if (!copy_inline(message, data_, copy)) [[unlikely]] {
+      return complete_with_call(kernel, message, data_, copy);
+    }
+    complete(kernel);
     return;
   }
   wait_here(registration, State::reader_waiting, me, message, bytes);
   kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_input, this});
+}
+
+bool ChanBase::copy_inline(void* destination, const void* source, CopyFn copy) {
+  if (copy == &copy_plain<4>) {
+    std::memcpy(destination, source, 4);
+    return true;
+  }
+  if (copy == &copy_plain<8>) {
+    std::memcpy(destination, source, 8);
+    return true;
+  }
+  return false;
+}
+
+void ChanBase::complete(Kernel& kernel) {
+  Process* waiter = std::exchange(waiter_, nullptr);
+  registration_ = nullptr;
+  state_ = State::empty;
+  kernel.wake(*waiter);
+}
+
+void ChanBase::complete_with_call(Kernel& kernel, void* destination, const void* source,
+                                  CopyFn copy) {
+  // Copied before the waiting side is released: a copy that throws leaves it waiting.
+  copy(destination, source);
+  complete(kernel);
+}
+
+void ChanBase::tell_alt_and_block(Kernel& kernel) {
+  alt_->guard_ready();
+  kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
+}
+
+void ChanBase::two_sides(const char* role) const {
+  throw std::logic_error("channel " + name_ + " has two " + role + " processes");
 }
 
 bool ChanBase::ready_for_input() const {

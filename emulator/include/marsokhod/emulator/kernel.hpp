@@ -152,14 +152,21 @@ public:
   Process* current() const { return current_; }
   /// Charges `duration` of CPU time to the current process (a compute-chunk boundary).
   void consume(Tick duration) {
-    // Fast path: nothing can happen before the chunk ends (no event, no deadline, no
-    // preemption or timeslice due), so the clock just moves on; this is exactly what the
-    // event queue would do, without its cost.
+    if (!consume_quickly(duration)) {
+      consume_slowly(duration);
+    }
+  }
+  /// consume()'s fast path alone: true if the chunk was charged; false if consume() is due,
+  /// with nothing changed.
+  bool consume_quickly(Tick duration) {
+    // Nothing can happen before the chunk ends (no event, no deadline, no preemption or
+    // timeslice due), so the clock just moves on; this is exactly what the event queue would
+    // do, without its cost.
     if (duration >= 0 && now_ + duration < fast_until_) {
       now_ += duration;
-      return;
+      return true;
     }
-    consume_slowly(duration);
+    return false;
   }
   /// Suspends the current process until wake(). (`why` by value: two registers, where a
   /// reference would reload a just-written temporary through memory.)

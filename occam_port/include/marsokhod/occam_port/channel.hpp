@@ -58,6 +58,11 @@ public:
   bool disable(AltState& alt);
 
 protected:
+  /// The copy of plain values of N bytes; a channel recognises it and copies inline.
+  template <std::size_t N>
+  static void copy_plain(void* destination, const void* source) {
+    std::memcpy(destination, source, N);
+  }
   /// Makes this an external channel: the outputting process (on one node) sends through
   /// `output_port`, the inputting process (on the other node) receives from `input_port`;
   /// the two are the ends of one link. Only for messages that are plain bytes.
@@ -107,7 +112,26 @@ private:
   };
   emulator::Tick charge(Charge& cached, const emulator::Node& node, emulator::Instruction op,
                         std::size_t bytes) const;
-  void copy_message(void* destination, const void* source, CopyFn copy) const;
+  /// Charges through the kernel's slow path, then goes on; out of line, so that the usual path
+  /// has no call to come back from.
+  [[gnu::noinline]] void output_after_slow_charge(emulator::Tick time, const void* message,
+                                                  std::size_t bytes, CopyFn copy,
+                                                  Registration& registration);
+  [[gnu::noinline]] void input_after_slow_charge(emulator::Tick time, void* message,
+                                                 std::size_t bytes, CopyFn copy,
+                                                 Registration& registration);
+  void output_charged(emulator::Kernel& kernel, emulator::Process& me, const void* message,
+                      std::size_t bytes, CopyFn copy, Registration& registration);
+  void input_charged(emulator::Kernel& kernel, emulator::Process& me, void* message,
+                     std::size_t bytes, CopyFn copy, Registration& registration);
+  /// Copies a message of a plain 4- or 8-byte type (see copy_plain) without a call.
+  static bool copy_inline(void* destination, const void* source, CopyFn copy);
+  /// The second side has the message: the waiting side is released.
+  void complete(emulator::Kernel& kernel);
+  [[gnu::noinline]] void complete_with_call(emulator::Kernel& kernel, void* destination,
+                                            const void* source, CopyFn copy);
+  [[gnu::noinline]] void tell_alt_and_block(emulator::Kernel& kernel);
+  [[noreturn, gnu::cold, gnu::noinline]] void two_sides(const char* role) const;
 
   State state_ = State::empty;
   emulator::Process* waiter_ = nullptr;
@@ -137,11 +161,11 @@ public:
   explicit Chan(std::string name) : ChanBase(std::move(name)) {}
 
   Chan& operator<<(const T& value) {
-    output(&value, message_bytes(value), &copy);
+    output(&value, message_bytes(value), copy);
     return *this;
   }
   Chan& operator>>(T& value) {
-    input(&value, message_bytes(value), &copy);
+    input(&value, message_bytes(value), copy);
     return *this;
   }
 
@@ -152,9 +176,16 @@ public:
   }
 
 private:
-  static void copy(void* destination, const void* source) {
+  static void copy_value(void* destination, const void* source) {
     *static_cast<T*>(destination) = *static_cast<const T*>(source);
   }
+  static constexpr CopyFn copy = [] {
+    if constexpr (std::is_trivially_copyable_v<T> && (sizeof(T) == 4 || sizeof(T) == 8)) {
+      return &ChanBase::copy_plain<sizeof(T)>;
+    } else {
+      return &copy_value;
+    }
+  }();
 };
 
 } // namespace marsokhod::occam_port
