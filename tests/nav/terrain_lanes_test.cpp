@@ -18,18 +18,6 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-float plain_ground_distance(double x, double y) {
-  const double squared = x * x + y * y;
-  if (!(squared > 1e-200 && squared < 1e200))
-    return static_cast<float>(std::hypot(x, y));
-  const double estimate = std::sqrt(squared);
-  const auto rounded = static_cast<float>(estimate);
-  if (static_cast<float>(estimate * (1.0 - 1e-15)) == rounded &&
-      static_cast<float>(estimate * (1.0 + 1e-15)) == rounded)
-    return rounded;
-  return static_cast<float>(std::hypot(x, y));
-}
-
 void expect_same_bits(float got, float want, int u, int v) {
   ASSERT_EQ(std::bit_cast<std::uint32_t>(got), std::bit_cast<std::uint32_t>(want))
       << u << "," << v << ": " << got << " vs " << want;
@@ -76,7 +64,7 @@ TEST(ReconstructTerrain, MatchesThePlainExpressionBitForBit) {
           want[0] = static_cast<float>(point.x());
           want[1] = static_cast<float>(point.y());
           want[2] = static_cast<float>(point.z());
-          want[3] = plain_ground_distance(point.x(), point.y());
+          want[3] = static_cast<float>(std::hypot(point.x(), point.y()));
           ++known;
         }
         expect_same_bits(terrain.forward(u, v), want[0], u, v);
