@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -83,10 +82,6 @@ bool level_point(const PixelGeometry& geometry, const Eigen::Vector3d& row_direc
   return true;
 }
 
-void store_floats(float* to, detail::Floats2 lanes) {
-  std::memcpy(to, &lanes, sizeof lanes);
-}
-
 // ground_distance() of two lanes, hypot only where a known lane needs it (bit i of `known` set
 // for a known lane i; the others may be nonsense).
 detail::Floats2 ground_distances(Doubles2 x, Doubles2 y, int known) {
@@ -151,9 +146,9 @@ private:
     Doubles2 level[3];
     for (int axis = 0; axis < 3; ++axis) {
       level[axis] = origin_[axis] + scale * (direction_[axis] + columns * step_[axis]);
-      store_floats(rows_[axis] + u, detail::narrowed(level[axis]));
+      detail::store_floats(rows_[axis] + u, detail::narrowed(level[axis]));
     }
-    store_floats(rows_[3] + u, ground_distances(level[0], level[1], known));
+    detail::store_floats(rows_[3] + u, ground_distances(level[0], level[1], known));
     if (known == 3)
       return 2;
     const int unknown = known == 1 ? u + 1 : u;

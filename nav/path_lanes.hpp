@@ -42,7 +42,7 @@ inline Doubles2 load_doubles(const double* from) {
   return lanes;
 }
 
-inline void store_doubles(double* to, Doubles2 lanes) {
+inline void store_floats(float* to, Floats2 lanes) {
   std::memcpy(to, &lanes, sizeof lanes);
 }
 
