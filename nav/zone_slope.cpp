@@ -11,12 +11,13 @@ namespace {
 // difference of the mean heights of the two outer lines over their distance.
 //
 // Only samples present on both lines are paired, so that a line cut short by the grid's edge
-// does not mix in the other axis's gradient. Where an outer line lies beyond the grid's edge the
-// centre line stands in for it over half the distance, as the world's rule clamps its samples at
-// the edge. An outer line that is merely empty (ground hidden behind a rock, or far rows too
-// sparse) gets no stand-in: a one-sided difference would read a rock too low to be an obstacle,
-// against the hidden ground behind it, as a slope twice as steep as its flank over the baseline,
-// and its margin would close the way around it.
+// does not mix in the other axis's gradient. An outer line that is empty gets no stand-in from
+// the centre line, whether the ground there was hidden (behind a rock, far rows too sparse) or
+// lies beyond the grid's edge: the grid ends where the cameras stopped seeing, not where the
+// ground ends, so its edge is unseen ground like any other. A one-sided difference would read a
+// rock too low to be an obstacle, against the unseen ground beyond it, as a slope twice as
+// steep as its flank over the baseline, and its margin would close the way around it (at the
+// grid's near edge, the ground right in front of the rover).
 class PlaneFit {
 public:
   // The means sit in a frame of d empty cells, so that a sample across the grid's edge reads
@@ -34,8 +35,8 @@ public:
   // Squared gradient of the plane at cell (ix, iy); `tests` counts the means read.
   double squared_gradient(int ix, int iy, std::uint64_t& tests) const {
     const float* centre = means_.data() + framed(ix, iy);
-    const double gx = gradient(centre, ix, grid_.nx(), 1, stride_, tests);
-    const double gy = gradient(centre, iy, grid_.ny(), stride_, 1, tests);
+    const double gx = gradient(centre, 1, stride_, tests);
+    const double gy = gradient(centre, stride_, 1, tests);
     return gx * gx + gy * gy;
   }
 
@@ -46,16 +47,12 @@ private:
   }
 
   // Gradient along the axis whose cells lie `step` apart in the frame (`across` along the
-  // other axis), at cell `along` of `cells` along it.
-  double gradient(const float* centre, int along, int cells, std::ptrdiff_t step,
-                  std::ptrdiff_t across, std::uint64_t& tests) const {
-    const int from = along - d_ >= 0 ? -d_ : 0;
-    const int to = along + d_ < cells ? d_ : 0;
-    if (from == to)
-      return 0.0;
+  // other axis); 0 where no pair of samples was seen.
+  double gradient(const float* centre, std::ptrdiff_t step, std::ptrdiff_t across,
+                  std::uint64_t& tests) const {
     tests += 6;
-    const float* low = centre + from * step;
-    const float* high = centre + to * step;
+    const float* low = centre - d_ * step;
+    const float* high = centre + d_ * step;
     const std::ptrdiff_t side = d_ * across;
     double rise = 0.0;
     int pairs = 0;
@@ -64,7 +61,7 @@ private:
     take_pair(low[side], high[side], rise, pairs);
     if (pairs == 0)
       return 0.0;
-    return rise / pairs / ((to - from) * grid_.cell());
+    return rise / pairs / (2 * d_ * grid_.cell());
   }
 
   // Adds the rise of a pair of samples when both are present, without a branch. A sum that

@@ -106,10 +106,27 @@ TEST(FindZones, SlopesSteeperThanTheLimitAreProhibited) {
       return rise * (0.6 * forward + 0.8 * left);
     });
     const ZoneMap zones = find_zones(t, {}, grid_options());
+    // The grid's edge is unseen ground: within the 0.32 m half-baseline (6 cells) of it only
+    // the other axis is measured, whose share of the gradient, 0.8 tan(30 deg) = 0.46 at most,
+    // stays under tan(25 deg) = 0.466. Those cells lie within the margin of the 52 x 52 steep
+    // ones.
     const bool steep = degrees > 25.0;
-    EXPECT_EQ(zones.count(Zone::slope), steep ? 64U * 64U : 0U) << degrees;
+    EXPECT_EQ(zones.count(Zone::slope), steep ? 52U * 52U : 0U) << degrees;
+    EXPECT_EQ(zones.count(Zone::margin), steep ? 64U * 64U - 52U * 52U : 0U) << degrees;
     EXPECT_EQ(zones.count(Zone::traversable), steep ? 0U : 64U * 64U) << degrees;
   }
+}
+
+TEST(FindZones, ALowRockAtTheNearEdgeOfWhatWasSeenIsNoSlope) {
+  // The 0.20 m block of the test below, cut by the bottom rows of the view (the nearest ground
+  // seen): its flank reads atan(0.20 / 0.64) = 17 deg over the baseline, but measured against
+  // the grid's edge, over half the baseline, it would read atan(0.20 / 0.32) = 32 deg, and the
+  // ground in front of the rover would be its margin.
+  const Box box{28, 56, 35, 63, 0.20};
+  const ZoneMap zones = find_zones(grid_with_box(GridSpec{}, box), {}, grid_options());
+  EXPECT_EQ(zones.count(Zone::slope), 0U);
+  EXPECT_EQ(zones.count(Zone::step), 0U);
+  EXPECT_EQ(zones.count(Zone::traversable), 64U * 64U);
 }
 
 TEST(FindZones, ALowRockWithHiddenGroundBehindItIsNoSlope) {

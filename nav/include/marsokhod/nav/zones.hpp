@@ -81,9 +81,10 @@ struct ZoneMap {
 /// points are binned into a ground grid of cell_m cells (no interpolation); a pixel is a step when
 /// a point within step_baseline_m along both ground axes is higher or lower than its own by more
 /// than max_step_m, a slope when the plane fitted to the cells half the slope baseline around its
-/// cell is steeper than max_slope_deg (an outer line with no cell present is left out; the centre
-/// line stands in for it only beyond the grid's edge), and margin when its cell lies within
-/// rover_half_width_m of a cell holding a step or slope (unknown ground is not grown). Work is
+/// cell is steeper than max_slope_deg (an outer line with no cell present, hidden or beyond the
+/// grid's edge, is left out; the centre line never stands in for it), and margin when its cell
+/// lies within rover_half_width_m of a cell holding a step or slope (unknown ground is not
+/// grown). Work is
 /// reported as Work::hazard_test per comparison made. Throws std::invalid_argument for bad options
 /// or a `reliable` mask of another size. Instantiated for NullMeter, CountingMeter and
 /// DynamicMeter.
