@@ -6,13 +6,14 @@
 #include "work_report.hpp"
 
 #include <algorithm>
+#include <array>
 #include <memory_resource>
 #include <stdexcept>
 
 namespace marsokhod::nav {
 
 std::vector<int> right_view_disparities(std::span<const std::uint16_t> aggregated, int width,
-                                        int candidates) {
+                                        int candidates, int unseen) {
   if (width < 1 || candidates < 1 ||
       aggregated.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(candidates))
     throw std::invalid_argument(
@@ -35,7 +36,9 @@ std::vector<int> right_view_disparities(std::span<const std::uint16_t> aggregate
     }
   std::pmr::vector<std::int16_t> right(static_cast<std::size_t>(width) * lanes, 0, memory);
   std::pmr::vector<std::int16_t> best(right.size(), 0, memory);
-  detail::choose_right_view(layout, cells.data(), right.data(), best.data());
+  std::array<std::int16_t, lanes> unseen_lanes{};
+  unseen_lanes.fill(static_cast<std::int16_t>(std::clamp(unseen, 0, width)));
+  detail::choose_right_view(layout, cells.data(), right.data(), best.data(), unseen_lanes.data());
   std::vector<int> out(static_cast<std::size_t>(width));
   for (std::size_t r = 0; r < out.size(); ++r)
     out[r] = right[r * lanes];

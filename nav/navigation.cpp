@@ -64,6 +64,27 @@ Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<f
   return seeable;
 }
 
+// Per row, the first columns whose level ground lies outside the right image: the matcher keeps
+// them out of its right view (StereoOptions::unseen_columns), where their necessarily wrong
+// matches would otherwise compete with the true ones of the right image's first columns.
+std::pmr::vector<std::int16_t> columns_past_right_edge(const StereoRig& rig,
+                                                       const NavigationOptions& options,
+                                                       std::pmr::memory_resource* memory) {
+  const int width = rig.width();
+  std::pmr::vector<std::int16_t> columns(static_cast<std::size_t>(rig.height()), 0, memory);
+  const double last = width - 1.0;
+  const std::pmr::vector<double> fractions =
+      detail::column_fractions(width, std::max(last, 1.0), memory);
+  const detail::LevelGround ground(rig, options.attitude);
+  for (int y = 0; y < rig.height(); ++y) {
+    const double first_d = ground.disparity(0.0, y);
+    const double rise = ground.disparity(last, y) - first_d;
+    columns[static_cast<std::size_t>(y)] = static_cast<std::int16_t>(
+        detail::columns_past_edge(fractions.data(), first_d, rise, width));
+  }
+  return columns;
+}
+
 NavigationResult without_path(NavigationResult result, std::string reason) {
   result.plan.found = false;
   result.plan.reason = std::move(reason);
@@ -115,6 +136,9 @@ NavigationResult navigate(ImageView<const std::uint8_t> left, ImageView<const st
   StereoOptions stereo_options = options.stereo;
   if (stereo_options.max_disparity == 0)
     stereo_options.max_disparity = rover_max_disparity(rig, options.attitude);
+  const std::pmr::vector<std::int16_t> unseen = columns_past_right_edge(rig, options, memory);
+  if (stereo_options.unseen_columns.empty())
+    stereo_options.unseen_columns = unseen;
   StereoResult stereo = match_stereo(left, right, stereo_options, meter, memory);
   const Image<float> seeable = seeable_disparity(left, stereo.disparity, rig, options, memory);
   NavigationResult result = navigate_disparity(seeable, stereo.valid, rig, options, meter, memory);

@@ -7,11 +7,13 @@
 namespace marsokhod::nav::detail {
 
 std::uint64_t choose_right_view(const BandLayout& layout, const std::uint16_t* aggregated,
-                                std::int16_t* disparity, std::int16_t* best) {
+                                std::int16_t* disparity, std::int16_t* best,
+                                const std::int16_t* unseen) {
   const int width = layout.width();
   const std::size_t lanes = static_cast<std::size_t>(width) * kBandRows;
   std::fill(disparity, disparity + lanes, std::int16_t{-1});
   std::fill(best, best + lanes, std::int16_t{0x7FFF});
+  const Lanes16 first_seen = unseen != nullptr ? load_lanes<Lanes16>(unseen) : broadcast16(0);
   std::uint64_t examined = 0;
   // Left pixels in increasing order meet each right pixel in increasing disparity, so the
   // strict comparison keeps the smaller disparity on a tie.
@@ -27,11 +29,12 @@ std::uint64_t choose_right_view(const BandLayout& layout, const std::uint16_t* a
       std::int16_t* held_cost = best + static_cast<std::ptrdiff_t>(x - first) * kBandRows;
       std::int16_t* held_disparity = disparity + static_cast<std::ptrdiff_t>(x - first) * kBandRows;
       Lanes16 candidate = broadcast16(first);
+      const Lanes16 seen = broadcast16(x) >= first_seen;
       for (int k = 0; k < reach; ++k) {
         const Lanes16 cost = load_lanes<Lanes16>(s + k * kBandRows);
         const Lanes16 held = load_lanes<Lanes16>(held_cost - k * kBandRows);
-        const Lanes16 better = cost < held;
-        store_lanes(held_cost - k * kBandRows, lanes_min(cost, held));
+        const Lanes16 better = seen & (cost < held);
+        store_lanes(held_cost - k * kBandRows, better ? cost : held);
         const Lanes16 chosen = load_lanes<Lanes16>(held_disparity - k * kBandRows);
         store_lanes(held_disparity - k * kBandRows, better ? candidate : chosen);
         candidate += 1;

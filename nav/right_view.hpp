@@ -16,8 +16,11 @@ namespace marsokhod::nav::detail {
 /// entries ([r * kBandRows + lane]); `best` is scratch. Returns the cells examined per line.
 /// This is the right view of semi-global matching (Hirschmueller 2008, section 3.4): it sees
 /// occlusions that a check of the left winners' claims alone cannot, since a mismatched left
-/// pixel whose right pixel nobody else claims passes such a check.
+/// pixel whose right pixel nobody else claims passes such a check. Left pixels x below
+/// `unseen[lane]` (kBandRows entries; null for none) take no part: their scene lies outside the
+/// right image (StereoOptions::unseen_columns), so no right pixel shows it.
 std::uint64_t choose_right_view(const BandLayout& layout, const std::uint16_t* aggregated,
-                                std::int16_t* disparity, std::int16_t* best);
+                                std::int16_t* disparity, std::int16_t* best,
+                                const std::int16_t* unseen = nullptr);
 
 } // namespace marsokhod::nav::detail

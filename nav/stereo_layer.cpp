@@ -78,6 +78,16 @@ void edge_penalties(ImageView<const std::uint8_t> image, int y0, const DpPenalti
     }
 }
 
+// The unseen columns of the band's lines, none for lines past the layer or when none are known.
+std::array<std::int16_t, kBandRows> band_unseen(std::span<const std::int16_t> unseen, int y0,
+                                                int rows) {
+  std::array<std::int16_t, kBandRows> lanes{};
+  if (!unseen.empty())
+    for (int lane = 0; lane < rows; ++lane)
+      lanes[static_cast<std::size_t>(lane)] = unseen[static_cast<std::size_t>(y0 + lane)];
+  return lanes;
+}
+
 } // namespace
 
 template <class Meter>
@@ -126,9 +136,10 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
       continue;
     }
     // Choosing the right view is one more minimum over the band's cells.
+    const std::array<std::int16_t, kBandRows> unseen = band_unseen(input.unseen, y0, rows);
     report(meter, Work::disparity_choice,
            choose_right_view(band.layout, dp.aggregated(), band.right_band.data(),
-                             band.right_best.data()) *
+                             band.right_best.data(), unseen.data()) *
                static_cast<std::uint64_t>(rows));
     band.right_lines.load(band.right_band.data());
     const int largest =

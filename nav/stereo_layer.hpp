@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory_resource>
+#include <span>
 
 namespace marsokhod::nav::detail {
 
@@ -26,6 +27,10 @@ struct LayerInput {
   /// coarse layers, whose disparities only seed the next layer's search, skip it, except the
   /// top layer under the ground prior, which needs reliable disparities to bound the rows above.
   bool check = true;
+  /// Per row, how many first columns show scene the right image cannot show: left out of the
+  /// right view (StereoOptions::unseen_columns; given at the original layer only); empty for
+  /// none.
+  std::span<const std::int16_t> unseen;
 };
 
 /// One layer's disparity (+inf where unreliable) and left-right validity.

@@ -128,7 +128,13 @@ StereoResult match_stereo(ImageView<const std::uint8_t> left, ImageView<const st
                              &right_features,
                              layer_limits(options, level, left_layer.width()),
                              guide ? &*guide : nullptr,
-                             level == 0 || (options.ground_prior && !guide)};
+                             level == 0 || (options.ground_prior && !guide),
+                             {}};
+    // The original layer's check decides what is reliable. The top layer's check only bounds
+    // the ground prior and, through the fill, guides the layers below; with the strip left out
+    // there too, one site more lost its path and one path became unsafe (50 sites).
+    if (level == 0)
+      input.unseen = options.unseen_columns;
     detail::LayerOutput layer = detail::match_layer(input, options, meter, memory);
     stats.push_back(
         {level, left_layer.width(), left_layer.height(), layer.candidates, layer.valid_pixels});

@@ -79,6 +79,11 @@ void check_pair(ImageView<const std::uint8_t> left, ImageView<const std::uint8_t
     throw std::invalid_argument(
         fmt::format("stereo: max_disparity {} does not fit in an image {} pixels wide",
                     options.max_disparity, left.width()));
+  if (!options.unseen_columns.empty() &&
+      options.unseen_columns.size() != static_cast<std::size_t>(left.height()))
+    throw std::invalid_argument(
+        fmt::format("stereo: unseen_columns has {} rows but the images have {}",
+                    options.unseen_columns.size(), left.height()));
   const int levels = pyramid_levels_for(left.width(), left.height(), options);
   const int top_width = left.width() >> (levels - 1);
   const int top_height = left.height() >> (levels - 1);

@@ -83,4 +83,17 @@ void keep_seeable(const std::uint8_t* seen, const double* fractions, double firs
   keep_textured(seen, in_view, width, disparity, out);
 }
 
+int columns_past_edge(const double* fractions, double first_d, double rise, int width) {
+  // Along a row ground_d changes by far less than a pixel a column (a row spans a few pixels
+  // of disparity), so the columns past the edge are the ones before the first that is not.
+  int x = 0;
+  while (x < width) {
+    const double ground_d = ground_disparity(fractions, first_d, rise, x);
+    if (ground_d <= 0.0 || x >= ground_d)
+      break;
+    ++x;
+  }
+  return x;
+}
+
 } // namespace marsokhod::nav::detail

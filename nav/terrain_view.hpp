@@ -37,4 +37,9 @@ std::pmr::vector<double> column_fractions(int width, double span,
 void keep_seeable(const std::uint8_t* seen, const double* fractions, double first_d, double rise,
                   int width, const float* disparity, float* out);
 
+/// How many of a row's first columns keep_seeable() drops as lying beyond the right image's
+/// edge (x < ground_d with ground_d > 0), at most `width`. At or above the horizon (ground_d <= 0)
+/// none: that is sky, not ground outside the right image.
+int columns_past_edge(const double* fractions, double first_d, double rise, int width);
+
 } // namespace marsokhod::nav::detail

@@ -11,13 +11,18 @@ namespace {
 // difference of the mean heights of the two outer lines over their distance.
 //
 // Only samples present on both lines are paired, so that a line cut short by the grid's edge
-// does not mix in the other axis's gradient. An outer line that is empty gets no stand-in from
-// the centre line, whether the ground there was hidden (behind a rock, far rows too sparse) or
-// lies beyond the grid's edge: the grid ends where the cameras stopped seeing, not where the
-// ground ends, so its edge is unseen ground like any other. A one-sided difference would read a
-// rock too low to be an obstacle, against the unseen ground beyond it, as a slope twice as
-// steep as its flank over the baseline, and its margin would close the way around it (at the
-// grid's near edge, the ground right in front of the rover).
+// does not mix in the other axis's gradient. An axis is measured only where the pair on the
+// cell's own line was seen: the side pairs lie diagonally, 0.42 m from the cell at the 0.60 m
+// baseline, and one of them alone, its cells holding points smeared across a rock's occluding
+// edge, read level ground as steep.
+//
+// An outer line that is empty gets no stand-in from the centre line, whether the ground there was
+// hidden (behind a rock, far rows too sparse) or lies beyond the grid's edge: the grid ends where
+// the cameras stopped seeing, not where the ground ends, so its edge is unseen ground like any
+// other. A one-sided difference would read a rock too low to be an obstacle, against the unseen
+// ground beyond it, as a slope twice as steep as its flank over the baseline, and its margin
+// would close the way around it (at the grid's near edge, the ground right in front of the
+// rover).
 class PlaneFit {
 public:
   // The means sit in a frame of d empty cells, so that a sample across the grid's edge reads
@@ -47,20 +52,20 @@ private:
   }
 
   // Gradient along the axis whose cells lie `step` apart in the frame (`across` along the
-  // other axis); 0 where no pair of samples was seen.
+  // other axis); 0 where the pair on the cell's own line was not seen.
   double gradient(const float* centre, std::ptrdiff_t step, std::ptrdiff_t across,
                   std::uint64_t& tests) const {
-    tests += 6;
     const float* low = centre - d_ * step;
     const float* high = centre + d_ * step;
-    const std::ptrdiff_t side = d_ * across;
-    double rise = 0.0;
-    int pairs = 0;
-    take_pair(low[-side], high[-side], rise, pairs);
-    take_pair(low[0], high[0], rise, pairs);
-    take_pair(low[side], high[side], rise, pairs);
-    if (pairs == 0)
+    tests += 2;
+    if (std::isnan(low[0]) || std::isnan(high[0]))
       return 0.0;
+    tests += 4;
+    const std::ptrdiff_t side = d_ * across;
+    double rise = static_cast<double>(high[0] - low[0]);
+    int pairs = 1;
+    take_pair(low[-side], high[-side], rise, pairs);
+    take_pair(low[side], high[side], rise, pairs);
     return rise / pairs / (2 * d_ * grid_.cell());
   }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -13,6 +14,7 @@
 #include <memory>
 #include <memory_resource>
 #include <new>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -162,6 +164,17 @@ TEST(StereoInput, BadOptionsAndColourImagesAreRefused) {
   expect_refused([&] { match_stereo(image.view(), image.view(), options); }, "penalties");
   const Image<std::uint8_t> colour(64, 48, 3);
   expect_refused([&] { match_stereo(colour.view(), colour.view(), scene_options()); }, "grey");
+}
+
+TEST(StereoInput, UnseenColumnsMustGiveOneCountPerRow) {
+  const Image<std::uint8_t> image = testing::random_dots(64, 48, 6);
+  StereoOptions options = scene_options();
+  // Arrays, not vectors: this file replaces the global allocation functions.
+  const std::array<std::int16_t, 48> counts{};
+  options.unseen_columns = std::span<const std::int16_t>(counts).first(47);
+  expect_refused([&] { match_stereo(image.view(), image.view(), options); }, "unseen_columns");
+  options.unseen_columns = counts;
+  EXPECT_GT(match_stereo(image.view(), image.view(), options).valid_pixels, 0U);
 }
 
 TEST(StereoInput, UniformImagesGiveNoValidPixelAndSayWhy) {

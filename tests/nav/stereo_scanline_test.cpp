@@ -118,6 +118,31 @@ TEST(ConsistencyCheck, AMismatchNobodyElseClaimsStillFailsAgainstTheRightView) {
   EXPECT_EQ(valid[3], 255);
 }
 
+TEST(ConsistencyCheck, PixelsWhoseSceneTheRightImageCannotShowTakeNoPartInTheRightView) {
+  // Left pixel 3 outbids left pixel 8 for right pixel 1 (S 1 at d 2 against S 4 at d 7): left
+  // pixel 8 fails. With the first 5 columns unseen, pixel 3 no longer competes, right pixel 1
+  // takes d 7 and pixel 8 passes; right pixel 0, met only by unseen pixels 0..4 and by the
+  // seen pixels 5..7 at d 5..7, now takes d 5 (all S 10, the smallest d).
+  const std::vector<std::uint16_t> s = aggregated_line(10, 8, {{3, 2, 1}, {8, 7, 4}});
+  std::vector<std::uint8_t> valid(10);
+  const std::vector<int> left = {0, 0, 0, 2, 0, 0, 0, 0, 7, 0};
+  const std::vector<int> all = right_view_disparities(s, 10, 8);
+  EXPECT_EQ(all[1], 2);
+  EXPECT_EQ(all[0], 0);
+  check_left_right(left, all, 1, valid);
+  EXPECT_EQ(valid[8], 0);
+  const std::vector<int> seen = right_view_disparities(s, 10, 8, 5);
+  EXPECT_EQ(seen[1], 7);
+  EXPECT_EQ(seen[0], 5);
+  check_left_right(left, seen, 1, valid);
+  EXPECT_EQ(valid[8], 255);
+  // Unseen pixels still get a right view's verdict: pixel 3's right pixel 1 now disagrees.
+  EXPECT_EQ(valid[3], 0);
+  // With every column unseen no right pixel is met.
+  const std::vector<int> none = right_view_disparities(s, 10, 8, 10);
+  EXPECT_TRUE(std::all_of(none.begin(), none.end(), [](int d) { return d == -1; }));
+}
+
 TEST(ConsistencyCheck, TheRightViewAgreesWithABruteForceMinimumOnRandomLines) {
   std::uint32_t state = 12345;
   const auto next = [&state] {

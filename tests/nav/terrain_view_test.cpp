@@ -65,6 +65,19 @@ TEST(KeepSeeable, KeepsWhatThePerPixelTestKeeps) {
   }
 }
 
+TEST(ColumnsPastEdge, CountsTheColumnsWhoseLevelGroundLiesBeyondTheRightImage) {
+  const std::pmr::vector<double> fractions =
+      column_fractions(101, 100.0, std::pmr::get_default_resource());
+  // Flat: x < 10.5 for x = 0..10.
+  EXPECT_EQ(columns_past_edge(fractions.data(), 10.5, 0.0, 101), 11);
+  // ground_d = 20 - 0.1 x: x < 20 - 0.1 x for x < 18.2, so x = 0..18.
+  EXPECT_EQ(columns_past_edge(fractions.data(), 20.0, -10.0, 101), 19);
+  // At or above the horizon: sky, none; the whole row when even the last column is short.
+  EXPECT_EQ(columns_past_edge(fractions.data(), 0.0, 0.0, 101), 0);
+  EXPECT_EQ(columns_past_edge(fractions.data(), -3.0, 1.0, 101), 0);
+  EXPECT_EQ(columns_past_edge(fractions.data(), 150.0, 0.0, 101), 101);
+}
+
 TEST(LevelGround, GivesTheRigsGroundDisparity) {
   std::mt19937_64 random(4407);
   for (int trial = 0; trial < 50; ++trial) {

@@ -148,6 +148,23 @@ TEST(FindZones, ALowRockWithHiddenGroundBehindItIsNoSlope) {
   EXPECT_EQ(zones.count(Zone::traversable), 64U * 64U - zones.count(Zone::unknown));
 }
 
+TEST(FindZones, ASidePairOfSamplesAloneMeasuresNoSlope) {
+  // Level ground with one cell raised 0.29 m (under the step limit), as points smeared across an
+  // occluding edge raise it, diagonally 6 cells (the half-baseline) from cell (32, 32). Two cells
+  // of that cell's own line and of its other side line along x are unseen, so along x only the
+  // side pair through the raised cell is seen: alone it would read 0.29 / 0.60 m, 25.8 deg.
+  // Every other cell pairs the raised one with level ones, 0.29 / 2 / 0.60 m (13.6 deg) at most.
+  TerrainPoints t = grid_terrain(GridSpec{}, [](double, double) { return 0.0; });
+  t.elevation(26, 26) = 0.29F;
+  for (const int y : {32, 38})
+    t.elevation(26, y) = t.forward(26, y) = t.left(26, y) = t.range(26, y) = kInf;
+  const ZoneMap zones = find_zones(t, {}, grid_options());
+  EXPECT_EQ(zones.count(Zone::slope), 0U);
+  EXPECT_EQ(zones.count(Zone::step), 0U);
+  EXPECT_EQ(zones.count(Zone::unknown), 2U);
+  EXPECT_EQ(zones.count(Zone::traversable), 64U * 64U - 2U);
+}
+
 TEST(FindZones, UnknownGroundIsNotTraversableButGetsNoMargin) {
   TerrainPoints t = grid_terrain(GridSpec{}, [](double, double) { return 0.0; });
   t.elevation(30, 30) = t.forward(30, 30) = t.left(30, 30) = t.range(30, 30) = kInf;

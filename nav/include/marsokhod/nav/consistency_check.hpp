@@ -13,10 +13,11 @@ namespace marsokhod::nav {
 /// pixel r takes the disparity d with the smallest S(r + d, d) over the left pixels r + d of the
 /// line, the smaller disparity on a tie, or -1 where no left pixel reaches it (r + d >= width
 /// for every d). This is the right view of semi-global matching (Hirschmueller 2008): a second
-/// minimum over the same costs instead of a second matching pass. Throws std::invalid_argument
-/// when aggregated does not hold width x candidates values.
+/// minimum over the same costs instead of a second matching pass. Left pixels x < `unseen`
+/// take no part (their scene lies outside the right image: StereoOptions::unseen_columns).
+/// Throws std::invalid_argument when aggregated does not hold width x candidates values.
 std::vector<int> right_view_disparities(std::span<const std::uint16_t> aggregated, int width,
-                                        int candidates);
+                                        int candidates, int unseen = 0);
 
 /// The left-right check of one scan line: a left pixel x with disparity d is reliable (255)
 /// when x - d lies inside the image and the right pixel's disparity is within `tolerance` of

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory_resource>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,13 @@ struct StereoOptions {
   FillPolicy fill = FillPolicy::background_along_row;
   /// 3x3 median of every layer's filled disparity (not applied with FillPolicy::none).
   bool median = true;
+  /// For each row of the left image, how many of its first columns show scene known to lie
+  /// outside the right image (the navigation's level ground, docs/navigation.md); empty when
+  /// nothing is known. Those pixels still get a disparity, but take no part in the right view:
+  /// any match they have is wrong, and without this it may outbid the true match of one of
+  /// the right image's first columns and fail the left-right check of the pixel that has it.
+  /// The values stay owned by the caller.
+  std::span<const std::int16_t> unseen_columns;
 };
 
 /// What one pyramid layer did.
