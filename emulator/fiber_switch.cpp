@@ -8,13 +8,6 @@
 // frame below: all of them miss. Returning instead pops that entry and keeps the predictor in step;
 // since processes suspend at the same few call sites, the predictions mostly hold.
 //
-// Boost reloads MXCSR and the x87 control word on every switch; both loads serialise the
-// floating-point pipeline and cost more than the rest of the switch. The ABI makes only their
-// control bits callee-saved (MXCSR's exception flags are caller-saved), and every fiber
-// normally runs with the same rounding and masks, so the resumed context's saved words are
-// compared with the current ones and loaded only when a control bit differs: a process that
-// changes its rounding mode still gets it back after a switch.
-//
 // The frame is Boost's, byte for byte (MXCSR and x87 control word, r12-r15, rbx, rbp, return
 // address), so a context suspended here can be resumed, unwound or ended by Boost's own
 // jump_fcontext and ontop_fcontext, and the other way round.
@@ -41,14 +34,8 @@ marsokhod_jump_fcontext:
     movq    %rbp, 0x30(%rsp)
     movq    %rsp, %rax
     movq    %rdi, %rsp
-    movl    (%rsp), %ecx
-    xorl    (%rax), %ecx
-    andl    $0xffc0, %ecx
-    movzwl  0x4(%rsp), %edx
-    xorw    0x4(%rax), %dx
-    orl     %edx, %ecx
-    jnz     2f
-1:
+    ldmxcsr (%rsp)
+    fldcw   0x4(%rsp)
     movq    0x8(%rsp), %r12
     movq    0x10(%rsp), %r13
     movq    0x18(%rsp), %r14
@@ -59,10 +46,6 @@ marsokhod_jump_fcontext:
     movq    %rsi, %rdx
     movq    %rax, %rdi
     ret
-2:
-    ldmxcsr (%rsp)
-    fldcw   0x4(%rsp)
-    jmp     1b
     .size marsokhod_jump_fcontext, .-marsokhod_jump_fcontext
     .popsection
 )");
