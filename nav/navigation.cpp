@@ -29,6 +29,33 @@ void check_images_fit(ImageView<const std::uint8_t> left, ImageView<const std::u
                                             rig.height()));
 }
 
+// The level ground's disparity along each row of a `width`-pixel-wide left image, which is
+// affine in x: the line the strip outside the right image is judged against.
+class GroundRows {
+public:
+  struct Line {
+    double first_d; // at column 0
+    double rise;    // from column 0 to the last
+  };
+
+  GroundRows(const StereoRig& rig, const Attitude& attitude, int width,
+             std::pmr::memory_resource* memory)
+      : last_(width - 1.0),
+        fractions_(detail::column_fractions(width, std::max(last_, 1.0), memory)),
+        ground_(rig, attitude) {}
+
+  const double* fractions() const { return fractions_.data(); }
+  Line line(int y) const {
+    const double first_d = ground_.disparity(0.0, y);
+    return {first_d, ground_.disparity(last_, y) - first_d};
+  }
+
+private:
+  double last_;
+  std::pmr::vector<double> fractions_;
+  detail::LevelGround ground_;
+};
+
 // The disparity of what the pair can show at all: textured pixels
 // (NavigationOptions::featureless_grey_range) below the horizon whose ground the right camera
 // sees; +inf elsewhere. Where the level ground's disparity exceeds the column (x - d < 0) the
@@ -50,15 +77,10 @@ Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<f
       options.featureless_grey_range > 0
           ? textured_pixels(left, options.featureless_grey_range, memory)
           : Image<std::uint8_t>(left.width(), left.height(), 1, 255, memory);
-  const double last = left.width() - 1.0;
-  const double span = std::max(last, 1.0);
-  const std::pmr::vector<double> fractions = detail::column_fractions(left.width(), span, memory);
-  const detail::LevelGround ground(rig, options.attitude);
+  const GroundRows ground(rig, options.attitude, left.width(), memory);
   for (int y = 0; y < left.height(); ++y) {
-    // The level ground's disparity is affine along a row.
-    const double first_d = ground.disparity(0.0, y);
-    const double rise = ground.disparity(last, y) - first_d;
-    detail::keep_seeable(textured.row(y), fractions.data(), first_d, rise, left.width(),
+    const GroundRows::Line line = ground.line(y);
+    detail::keep_seeable(textured.row(y), ground.fractions(), line.first_d, line.rise, left.width(),
                          disparity.row(y), seeable.row(y));
   }
   return seeable;
@@ -70,17 +92,12 @@ Image<float> seeable_disparity(ImageView<const std::uint8_t> left, const Image<f
 std::pmr::vector<std::int16_t> columns_past_right_edge(const StereoRig& rig,
                                                        const NavigationOptions& options,
                                                        std::pmr::memory_resource* memory) {
-  const int width = rig.width();
   std::pmr::vector<std::int16_t> columns(static_cast<std::size_t>(rig.height()), 0, memory);
-  const double last = width - 1.0;
-  const std::pmr::vector<double> fractions =
-      detail::column_fractions(width, std::max(last, 1.0), memory);
-  const detail::LevelGround ground(rig, options.attitude);
+  const GroundRows ground(rig, options.attitude, rig.width(), memory);
   for (int y = 0; y < rig.height(); ++y) {
-    const double first_d = ground.disparity(0.0, y);
-    const double rise = ground.disparity(last, y) - first_d;
+    const GroundRows::Line line = ground.line(y);
     columns[static_cast<std::size_t>(y)] = static_cast<std::int16_t>(
-        detail::columns_past_edge(fractions.data(), first_d, rise, width));
+        detail::columns_past_edge(ground.fractions(), line.first_d, line.rise, rig.width()));
   }
   return columns;
 }
@@ -136,9 +153,12 @@ NavigationResult navigate(ImageView<const std::uint8_t> left, ImageView<const st
   StereoOptions stereo_options = options.stereo;
   if (stereo_options.max_disparity == 0)
     stereo_options.max_disparity = rover_max_disparity(rig, options.attitude);
-  const std::pmr::vector<std::int16_t> unseen = columns_past_right_edge(rig, options, memory);
-  if (stereo_options.unseen_columns.empty())
+  // Kept alive here: the options only point at it.
+  std::pmr::vector<std::int16_t> unseen(memory);
+  if (stereo_options.unseen_columns.empty()) {
+    unseen = columns_past_right_edge(rig, options, memory);
     stereo_options.unseen_columns = unseen;
+  }
   StereoResult stereo = match_stereo(left, right, stereo_options, meter, memory);
   const Image<float> seeable = seeable_disparity(left, stereo.disparity, rig, options, memory);
   NavigationResult result = navigate_disparity(seeable, stereo.valid, rig, options, meter, memory);
