@@ -1,3 +1,4 @@
+#include "nav/portable_random.hpp"
 #include "nav/terrain_grid.hpp"
 
 #include "marsokhod/nav/path_planner.hpp"
@@ -80,10 +81,7 @@ std::vector<double> dijkstra(const TerrainPoints& t, const ZoneMap& zones, Pixel
   return distance;
 }
 
-// Uniform in [0, 1) from the generator's raw bits (no std distribution: same on every library).
-double unit(std::mt19937_64& random) {
-  return static_cast<double>(random() >> 11) * 0x1.0p-53;
-}
+using testing::unit;
 
 TEST(SweepRows, GivesTheSameCostsAsDijkstraOnRandomGraphs) {
   std::mt19937_64 random(20240607);

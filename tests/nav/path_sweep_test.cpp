@@ -1,3 +1,4 @@
+#include "nav/portable_random.hpp"
 #include "nav/terrain_grid.hpp"
 
 #include "marsokhod/nav/path_planner.hpp"
@@ -66,9 +67,7 @@ Plain plain_sweep(const TerrainPoints& t, const ZoneMap& zones, PixelPoint start
   return p;
 }
 
-double unit(std::mt19937_64& random) {
-  return static_cast<double>(random() >> 11) * 0x1.0p-53;
-}
+using testing::unit;
 
 // Rough ground with holes (unknown points), prohibited pixels, odd and even widths and edge
 // limits that cut some edges, so that every branch of the lanes is taken.

@@ -1,4 +1,5 @@
 #include "../../nav/terrain_view.hpp"
+#include "nav/portable_random.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,9 +30,7 @@ std::vector<float> tested_per_pixel(const std::vector<std::uint8_t>& seen, doubl
   return out;
 }
 
-double unit(std::mt19937_64& random) {
-  return static_cast<double>(random() >> 11) * 0x1.0p-53;
-}
+using testing::unit;
 
 TEST(KeepSeeable, KeepsWhatThePerPixelTestKeeps) {
   std::mt19937_64 random(9127);
