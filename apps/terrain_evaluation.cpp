@@ -112,11 +112,11 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainCli& cli) {
   outcome.hazards = score_hazards(result.zones, frame.truth);
   outcome.found = result.found();
   outcome.reason = result.reason();
-  outcome.unsafe = result.found() && crosses_obstacle(result.plan, frame.truth);
   collect_elevation_errors(result.terrain, result.zones, frame.truth, outcome.elevation_errors);
 
   const nav::TerrainPoints truth_terrain =
       nav::reconstruct_terrain(frame.truth.disparity, rig, placement.attitude);
+  outcome.unsafe = result.found() && crosses_obstacle(result.plan, truth_terrain, frame.truth);
   const nav::ZoneMap truth_zones = ground_truth_zones(truth_terrain, frame.truth, options.zones);
   outcome.bands = score_zones(result.zones, truth_zones, frame.truth);
   const nav::PathPlan truth_plan = nav::plan_path(truth_terrain, truth_zones, options.planner);
@@ -294,8 +294,8 @@ Command add_terrain_evaluation(CLI::App& eval) {
       "zones that the navigation prohibits (free pixels inside the truth's margin are not "
       "scored). 'Ground truth has a path' = the same planner finds one on the ground-truth "
       "zones and terrain; a path is unsafe when any of its pixels sees a ground-truth obstacle "
-      "(not grown). 'Hazards alone' scores unknown, step and slope pixels against the obstacle "
-      "map itself, without margins.");
+      "(not grown), or the rover's straight drive to its start does. 'Hazards alone' scores "
+      "unknown, step and slope pixels against the obstacle map itself, without margins.");
   app->add_option("--seeds", cli->seeds, "Terrain seeds A..B (inclusive) or one seed")->required();
   app->add_option("--size", cli->size, "Image width and height, pixels")
       ->check(CLI::Range(32, 1024))

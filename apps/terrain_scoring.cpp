@@ -1,5 +1,8 @@
 #include "terrain_scoring.hpp"
 
+#include "marsokhod/nav/start_approach.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -102,11 +105,17 @@ void collect_elevation_errors(const nav::TerrainPoints& terrain, const nav::Zone
     }
 }
 
-bool crosses_obstacle(const nav::PathPlan& plan, const world::GroundTruth& truth) {
-  for (const nav::PixelPoint& pixel : plan.pixels)
-    if (truth.obstacles(pixel.x, pixel.y) != 0)
-      return true;
-  return false;
+bool crosses_obstacle(const nav::PathPlan& plan, const nav::TerrainPoints& truth_terrain,
+                      const world::GroundTruth& truth) {
+  const auto sees_obstacle = [&truth](const nav::PixelPoint& pixel) {
+    return truth.obstacles(pixel.x, pixel.y) != 0;
+  };
+  if (std::any_of(plan.pixels.begin(), plan.pixels.end(), sees_obstacle))
+    return true;
+  if (!truth_terrain.known(plan.start.x, plan.start.y))
+    return false; // the start lies on ground the true disparity does not place
+  const std::pmr::vector<nav::PixelPoint> approach = nav::start_approach(truth_terrain, plan.start);
+  return std::any_of(approach.begin(), approach.end(), sees_obstacle);
 }
 
 double percent(std::uint64_t part, std::uint64_t whole) {

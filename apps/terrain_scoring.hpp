@@ -60,8 +60,10 @@ void collect_elevation_errors(const nav::TerrainPoints& terrain, const nav::Zone
                               const world::GroundTruth& truth,
                               std::array<std::vector<float>, kTerrainBands.size()>& errors);
 
-/// True when a pixel of the path sees a ground-truth obstacle.
-bool crosses_obstacle(const nav::PathPlan& plan, const world::GroundTruth& truth);
+/// True when a pixel of the path sees a ground-truth obstacle, or a pixel of the straight
+/// approach from the rover to the path's start, placed on the true terrain, does.
+bool crosses_obstacle(const nav::PathPlan& plan, const nav::TerrainPoints& truth_terrain,
+                      const world::GroundTruth& truth);
 
 /// Share in percent, absent (NaN) for an empty denominator.
 double percent(std::uint64_t part, std::uint64_t whole);

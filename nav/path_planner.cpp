@@ -54,15 +54,29 @@ bool row_reaches_start_box(const float* range, const float* left, int width, flo
   return inside != 0;
 }
 
-// The nearest traversable pixel straight in front of the rover; among equals the one nearest
-// the heading line, then the lowest and leftmost (a fixed order, so ties are reproducible).
-std::optional<PixelPoint> find_start(const TerrainPoints& terrain, const ZoneMap& zones,
-                                     const PlannerOptions& options) {
+bool is_hazard(const ZoneMap& zones, int x, int y) {
+  const Zone zone = zones.at(x, y);
+  return zone == Zone::step || zone == Zone::slope;
+}
+
+struct StartChoice {
+  std::optional<PixelPoint> pixel;
+  /// The nearest step or slope straight in front, when it lies before every start.
+  std::optional<double> barrier_m;
+};
+
+// The nearest traversable pixel straight in front of the rover above row `below_row`; among
+// equals the one nearest the heading line, then the lowest and leftmost (a fixed order, so ties
+// are reproducible). None when a step or slope straight in front lies nearer: the rover would
+// run over it on its way to the start.
+StartChoice find_start(const TerrainPoints& terrain, const ZoneMap& zones,
+                       const PlannerOptions& options, int below_row) {
   const float max_range = float_floor(options.start_max_m);
   const float max_offset = float_floor(options.start_lateral_m);
   std::optional<PixelPoint> best;
   double best_range = 0.0;
   double best_offset = 0.0;
+  double nearest_hazard = std::numeric_limits<double>::infinity();
   for (int y = terrain.height() - 1; y >= 0; --y) {
     if (!row_reaches_start_box(terrain.range.row(y), terrain.left.row(y), terrain.width(),
                                max_range, max_offset))
@@ -70,9 +84,13 @@ std::optional<PixelPoint> find_start(const TerrainPoints& terrain, const ZoneMap
     const float* ranges = terrain.range.row(y);
     const float* lefts = terrain.left.row(y);
     for (int x = 0; x < terrain.width(); ++x) {
-      if (std::abs(lefts[x]) > max_offset || ranges[x] > max_range || !zones.traversable(x, y))
+      if (std::abs(lefts[x]) > max_offset || ranges[x] > max_range)
         continue;
       const double range = ranges[x];
+      if (is_hazard(zones, x, y))
+        nearest_hazard = std::min(nearest_hazard, range);
+      if (y >= below_row || !zones.traversable(x, y))
+        continue;
       const double offset = std::abs(lefts[x]);
       if (!best || range < best_range || (range == best_range && offset < best_offset)) {
         best = PixelPoint{x, y};
@@ -81,7 +99,9 @@ std::optional<PixelPoint> find_start(const TerrainPoints& terrain, const ZoneMap
       }
     }
   }
-  return best;
+  if (best && best_range > nearest_hazard)
+    return StartChoice{std::nullopt, nearest_hazard};
+  return StartChoice{best, std::nullopt};
 }
 
 bool in_target_band(const TerrainPoints& terrain, const PlannerOptions& options, int x, int y) {
@@ -164,9 +184,56 @@ std::pmr::vector<PixelPoint> rebuild_path(const RowSweep& sweep, PixelPoint targ
   return path;
 }
 
+// The highest row holding a pixel of the start box that a sweep reached: a start beyond the
+// pocket the sweep explored lies above it.
+int top_of_reach_in_start_box(const TerrainPoints& terrain, const RowSweep& sweep,
+                              const PlannerOptions& options) {
+  const float max_offset = float_floor(options.start_lateral_m);
+  for (int y = sweep.first_row; y < sweep.start.y; ++y)
+    for (int x = 0; x < terrain.width(); ++x)
+      if (std::isfinite(sweep.cost(x, y)) && std::abs(terrain.left(x, y)) <= max_offset)
+        return y;
+  return sweep.start.y;
+}
+
 PathPlan not_found(std::string reason, std::pmr::memory_resource* memory) {
   PathPlan plan{false, std::move(reason), {}, {}, 0.0, 0.0, std::pmr::vector<PixelPoint>(memory)};
   return plan;
+}
+
+// Sweeps from the nearest start and, while no destination can be reached, from the next start
+// beyond the ground the sweeps reached in front of the rover.
+template <class Meter>
+PathPlan plan_from_starts(const TerrainPoints& terrain, const ZoneMap& zones,
+                          const PlannerOptions& options, PixelPoint nearest, Meter& meter,
+                          std::pmr::memory_resource* memory) {
+  std::optional<PixelPoint> start = nearest;
+  for (int attempt = 0; attempt < options.start_attempts && start; ++attempt) {
+    const std::optional<int> first_row = first_target_row(terrain, zones, options, start->y);
+    if (!first_row && attempt == 0)
+      return not_found(fmt::format("no traversable ground {:.1f}-{:.1f} m away in view",
+                                   options.target_min_m, options.target_max_m),
+                       memory);
+    if (!first_row)
+      break; // farther starts see no more of the target band
+    const RowSweep sweep =
+        sweep_rows(terrain, zones, *start, *first_row, edge_weights(options), meter, memory);
+    if (const std::optional<Destination> destination = choose_destination(terrain, sweep, options))
+      return PathPlan{true,
+                      {},
+                      *start,
+                      destination->pixel,
+                      destination->cost,
+                      destination->score,
+                      rebuild_path(sweep, destination->pixel, meter, memory)};
+    start = find_start(terrain, zones, options, top_of_reach_in_start_box(terrain, sweep, options))
+                .pixel;
+  }
+  return not_found(fmt::format("no traversable point {:.1f}-{:.1f} m away can be reached "
+                               "from the start {:.2f} m ahead",
+                               options.target_min_m, options.target_max_m,
+                               terrain.range(nearest.x, nearest.y)),
+                   memory);
 }
 
 } // namespace
@@ -189,6 +256,8 @@ void validate(const PlannerOptions& options) {
   require(std::isfinite(options.heading_weight) && options.heading_weight >= 0.0, "heading_weight",
           options.heading_weight, "must be finite and not negative");
   require(options.max_edge_m > 0.0, "max_edge_m", options.max_edge_m, "must be positive");
+  require(options.start_attempts >= 1, "start_attempts", options.start_attempts,
+          "must be at least 1");
 }
 
 template <class Meter>
@@ -199,33 +268,18 @@ PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
     throw std::invalid_argument(fmt::format("plan_path: {}x{} zones for a {}x{} terrain",
                                             zones.width(), zones.height(), terrain.width(),
                                             terrain.height()));
-  const std::optional<PixelPoint> start = find_start(terrain, zones, options);
-  if (!start)
+  const StartChoice nearest = find_start(terrain, zones, options, terrain.height());
+  if (nearest.barrier_m)
+    return not_found(fmt::format("a step or slope {:.2f} m straight ahead lies before every "
+                                 "traversable point in front of the rover",
+                                 *nearest.barrier_m),
+                     memory);
+  if (!nearest.pixel)
     return not_found(fmt::format("no traversable ground within {:.2f} m straight in front of "
                                  "the rover",
                                  options.start_max_m),
                      memory);
-  const std::optional<int> first_row = first_target_row(terrain, zones, options, start->y);
-  if (!first_row)
-    return not_found(fmt::format("no traversable ground {:.1f}-{:.1f} m away in view",
-                                 options.target_min_m, options.target_max_m),
-                     memory);
-  const RowSweep sweep =
-      sweep_rows(terrain, zones, *start, *first_row, edge_weights(options), meter, memory);
-  const std::optional<Destination> destination = choose_destination(terrain, sweep, options);
-  if (!destination)
-    return not_found(fmt::format("no traversable point {:.1f}-{:.1f} m away can be reached "
-                                 "from the start {:.2f} m ahead",
-                                 options.target_min_m, options.target_max_m,
-                                 terrain.range(start->x, start->y)),
-                     memory);
-  return PathPlan{true,
-                  {},
-                  *start,
-                  destination->pixel,
-                  destination->cost,
-                  destination->score,
-                  rebuild_path(sweep, destination->pixel, meter, memory)};
+  return plan_from_starts(terrain, zones, options, *nearest.pixel, meter, memory);
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \

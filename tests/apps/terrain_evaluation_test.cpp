@@ -1,3 +1,4 @@
+#include "nav/terrain_grid.hpp"
 #include "support/run_marsokhod.hpp"
 #include "terrain_scoring.hpp"
 
@@ -119,13 +120,37 @@ TEST(ElevationErrors, AreTakenOnJudgedFreeGroundWhereTheNavigationHasAPoint) {
   EXPECT_TRUE(judged[1].empty());
 }
 
-TEST(CrossesObstacle, IsTrueWhenAnyPathPixelSeesAnObstacle) {
-  world::GroundTruth truth = strip_truth();
+// A 5 x 10 view of level ground, 0.1 m a pixel: row 9 is 2.0 m ahead, row 0 2.9 m; column 2
+// straight ahead. The path starts 2.5 m ahead (row 4) and runs straight on.
+struct StraightAhead {
+  nav::testing::GridSpec grid{5, 10, 0.1, 2.0};
+  nav::TerrainPoints terrain = nav::testing::grid_terrain(grid, [](double, double) { return 0.0; });
+  world::GroundTruth truth = world::GroundTruth::unknown(5, 10);
   nav::PathPlan plan;
-  plan.pixels = {{0, 0}, {1, 0}};
-  EXPECT_FALSE(crosses_obstacle(plan, truth));
-  truth.obstacles(1, 0) = 255;
-  EXPECT_TRUE(crosses_obstacle(plan, truth));
+  StraightAhead() {
+    plan.start = {2, 4};
+    plan.pixels = {{2, 4}, {2, 3}, {2, 2}, {2, 1}, {2, 0}};
+  }
+};
+
+TEST(CrossesObstacle, IsTrueWhenAnyPathPixelSeesAnObstacle) {
+  StraightAhead site;
+  EXPECT_FALSE(crosses_obstacle(site.plan, site.terrain, site.truth));
+  site.truth.obstacles(2, 1) = 255;
+  EXPECT_TRUE(crosses_obstacle(site.plan, site.terrain, site.truth));
+}
+
+TEST(CrossesObstacle, IsTrueWhenTheDriveToTheStartSeesAnObstacle) {
+  StraightAhead site;
+  // 0.2 m beside the line from the rover to the start: the rover's centre passes it by.
+  site.truth.obstacles(0, 7) = 255;
+  EXPECT_FALSE(crosses_obstacle(site.plan, site.terrain, site.truth));
+  // 2.2 m straight ahead, short of the start: the rover drives over it to reach the start.
+  site.truth.obstacles(2, 7) = 255;
+  EXPECT_TRUE(crosses_obstacle(site.plan, site.terrain, site.truth));
+  // Where the true terrain has no point at the start, only the path's own pixels count.
+  site.terrain.elevation(2, 4) = std::numeric_limits<float>::infinity();
+  EXPECT_FALSE(crosses_obstacle(site.plan, site.terrain, site.truth));
 }
 
 TEST(Percent, IsNotANumberForAnEmptyWhole) {

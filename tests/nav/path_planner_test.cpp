@@ -34,8 +34,8 @@ ZoneMap all_traversable(const TerrainPoints& t) {
   return zones;
 }
 
-void prohibit(ZoneMap& zones, int x, int y) {
-  zones.zone(x, y) = static_cast<std::uint8_t>(Zone::step);
+void prohibit(ZoneMap& zones, int x, int y, Zone zone = Zone::step) {
+  zones.zone(x, y) = static_cast<std::uint8_t>(zone);
 }
 
 // The documented edge weight, written out again:
@@ -186,15 +186,62 @@ TEST(PlanPath, StartsAtTheNearestTraversablePointInFront) {
   const GridSpec g = long_grid();
   const TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
   ZoneMap zones = all_traversable(t);
-  // The first 0.9 m in front is prohibited: rows 207..190 (2.00..2.85 m).
+  // The first 0.9 m in front is the margin of rocks to the sides: rows 207..190 (2.00..2.85 m).
   for (int y = 190; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x)
-      prohibit(zones, x, y);
+      prohibit(zones, x, y, Zone::margin);
   const PathPlan plan = plan_path(t, zones, PlannerOptions{});
   ASSERT_TRUE(plan.found) << plan.reason;
   EXPECT_EQ(plan.start, (PixelPoint{20, 189}));
   EXPECT_NEAR(grid_forward(g, 189), 2.90, 1e-9); // fig. 4's start distance
   EXPECT_NEAR(grid_left(g, 20), 0.0, 1e-9);
+}
+
+TEST(PlanPath, TakesNoStartBehindAStepStraightAhead) {
+  const GridSpec g = long_grid();
+  const TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
+  // A rock 2.00-2.35 m ahead (rows 207..200) spanning the centre column, the ground beyond it
+  // open: the nearest traversable point in front lies behind the rock.
+  ZoneMap rock = all_traversable(t);
+  for (int y = 200; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x)
+      prohibit(rock, x, y, x == 20 ? Zone::step : Zone::margin);
+  const PathPlan blocked = plan_path(t, rock, PlannerOptions{});
+  EXPECT_FALSE(blocked.found);
+  EXPECT_NE(blocked.reason.find("step or slope 2.00 m straight ahead"), std::string::npos)
+      << blocked.reason;
+  // The same rock 0.30 m to the side (column 26) is outside the 0.25 m the start is sought in:
+  // the start is the nearest traversable point straight ahead, 2.40 m away.
+  ZoneMap aside = all_traversable(t);
+  for (int y = 200; y < g.height; ++y)
+    for (int x = 0; x < g.width; ++x)
+      prohibit(aside, x, y, x == 26 ? Zone::step : Zone::margin);
+  const PathPlan beside = plan_path(t, aside, PlannerOptions{});
+  ASSERT_TRUE(beside.found) << beside.reason;
+  EXPECT_EQ(beside.start, (PixelPoint{20, 199}));
+}
+
+TEST(PlanPath, TriesTheNextStartBeyondADeadEndInFront) {
+  const GridSpec g = long_grid();
+  const TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
+  // Open ground 2.00-2.35 m ahead (rows 207..200), closed across the whole view by a margin
+  // 2.40-2.85 m ahead (rows 199..190), open again beyond: the nearest start leads nowhere.
+  ZoneMap zones = all_traversable(t);
+  for (int y = 190; y < 200; ++y)
+    for (int x = 0; x < g.width; ++x)
+      prohibit(zones, x, y, Zone::margin);
+  PlannerOptions nearest_only;
+  nearest_only.start_attempts = 1;
+  const PathPlan dead_end = plan_path(t, zones, nearest_only);
+  EXPECT_FALSE(dead_end.found);
+  EXPECT_NE(dead_end.reason.find("can be reached from the start 2.00 m ahead"), std::string::npos)
+      << dead_end.reason;
+  // The next start is the nearest point in front above the rows the first sweep reached.
+  const PathPlan plan = plan_path(t, zones, PlannerOptions{});
+  ASSERT_TRUE(plan.found) << plan.reason;
+  EXPECT_EQ(plan.start, (PixelPoint{20, 189}));
+  EXPECT_EQ(plan.target, (PixelPoint{20, 47}));
+  EXPECT_NEAR(plan.cost, 0.02 * 7.1, 1e-4); // 2.90 m to 10.0 m of straight level ground
 }
 
 TEST(PlanPath, ReportsWhyThereIsNoPath) {
@@ -266,6 +313,9 @@ TEST(PlanPath, RejectsBadOptions) {
   PlannerOptions no_edge;
   no_edge.max_edge_m = 0.0;
   EXPECT_THROW(plan_path(t, all_traversable(t), no_edge), std::invalid_argument);
+  PlannerOptions no_start;
+  no_start.start_attempts = 0;
+  EXPECT_THROW(plan_path(t, all_traversable(t), no_start), std::invalid_argument);
 }
 
 } // namespace

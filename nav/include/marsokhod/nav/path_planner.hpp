@@ -22,9 +22,14 @@ struct PlannerOptions {
   double target_min_m = 10.0;
   double target_max_m = 12.0;
   /// The start is the nearest traversable pixel in front of the rover (|level y| at most
-  /// start_lateral_m) no farther than start_max_m; farther means the way out is blocked.
+  /// start_lateral_m) no farther than start_max_m; farther means the way out is blocked. The
+  /// rover drives straight to it, so there is none behind a step or slope in front.
   double start_lateral_m = 0.25;
   double start_max_m = 3.5;
+  /// Starts tried in all. The nearest start may lie in a pocket that a prohibited zone
+  /// closes; then the nearest traversable point in front above the rows the sweep reached
+  /// there is tried next, so that a dead end right in front does not hide the way beyond it.
+  int start_attempts = 4;
   /// Tie-break added to every edge: this much cost per metre of ground between its two ends,
   /// so that on flat ground the shortest, straightest path wins.
   double length_weight = 0.02;
@@ -96,11 +101,11 @@ struct PathPlan {
   std::pmr::vector<PixelPoint> pixels;
 };
 
-/// Finds the start, sweeps the rows, picks the virtual destination with the lowest cost plus
-/// heading penalty among the reachable pixels target_min_m..target_max_m away, and rebuilds
-/// the path from it back to the start (Work::path_backtrack per step). A plan that cannot be
-/// made is found = false with a reason. Throws std::invalid_argument for bad options or zones
-/// of another size than the terrain.
+/// Finds the start (trying up to start_attempts starts, nearest first), sweeps the rows, picks the
+/// virtual destination with the lowest cost plus heading penalty among the reachable pixels
+/// target_min_m..target_max_m away, and rebuilds the path from it back to the start
+/// (Work::path_backtrack per step). A plan that cannot be made is found = false with a reason.
+/// Throws std::invalid_argument for bad options or zones of another size than the terrain.
 template <class Meter = NullMeter>
 PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
                    const PlannerOptions& options, Meter& meter = null_meter,
