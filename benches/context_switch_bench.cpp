@@ -1,10 +1,9 @@
-// Host cost of switching between simulated processes, against a bare Boost.Context switch, and
-// the memory of many live processes.
+// Host cost of switching between simulated processes, against a bare Boost.Context switch
+// (bare_fiber_switch.cpp), and the memory of many live processes.
 
 #include "marsokhod/emulator/kernel.hpp"
 
 #include <benchmark/benchmark.h>
-#include <boost/context/fiber.hpp>
 
 #include <fstream>
 #include <string>
@@ -12,27 +11,6 @@
 namespace {
 
 using namespace marsokhod::emulator;
-
-// Two fibers handing control back and forth: the floor any process switch sits on.
-void BM_BareFiberSwitch(benchmark::State& state) {
-  namespace ctx = boost::context;
-  bool done = false;
-  ctx::fiber other([&done](ctx::fiber&& back) {
-    while (!done) {
-      back = std::move(back).resume();
-    }
-    return std::move(back);
-  });
-  for (auto _ : state) {
-    other = std::move(other).resume();
-  }
-  done = true;
-  std::move(other).resume();
-  state.counters["ns_per_switch"] =
-      benchmark::Counter(static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-}
-BENCHMARK(BM_BareFiberSwitch);
 
 // Two processes on one CPU yielding to each other: one kernel process switch per yield.
 void BM_KernelYieldSwitch(benchmark::State& state) {
