@@ -112,8 +112,6 @@ bool crosses_obstacle(const nav::PathPlan& plan, const nav::TerrainPoints& truth
   };
   if (std::any_of(plan.pixels.begin(), plan.pixels.end(), sees_obstacle))
     return true;
-  if (!truth_terrain.known(plan.start.x, plan.start.y))
-    return false; // the start lies on ground the true disparity does not place
   const std::pmr::vector<nav::PixelPoint> approach = nav::start_approach(truth_terrain, plan.start);
   return std::any_of(approach.begin(), approach.end(), sees_obstacle);
 }

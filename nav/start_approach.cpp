@@ -27,6 +27,8 @@ std::optional<double> distance_short_of_start(const Segment& segment, double for
 std::pmr::vector<PixelPoint> start_approach(const TerrainPoints& terrain, PixelPoint start,
                                             double tolerance_m, std::pmr::memory_resource* memory) {
   std::pmr::vector<PixelPoint> pixels(memory);
+  if (!terrain.known(start.x, start.y))
+    return pixels; // no ground point to drive to
   const double forward = terrain.forward(start.x, start.y);
   const double left = terrain.left(start.x, start.y);
   const Segment line{forward, left, forward * forward + left * left};

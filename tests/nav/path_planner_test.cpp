@@ -20,13 +20,9 @@ using testing::grid_forward;
 using testing::grid_left;
 using testing::grid_terrain;
 using testing::GridSpec;
+using testing::long_grid;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// A 5 cm grid from 2.0 m to 12.35 m ahead: rows 207 (2.0 m) up to 0 (12.35 m).
-GridSpec long_grid() {
-  return GridSpec{41, 208, 0.05, 2.0};
-}
 
 ZoneMap all_traversable(const TerrainPoints& t) {
   ZoneMap zones{Image<std::uint8_t>(t.width(), t.height(), 1, 0), {}};
@@ -36,6 +32,17 @@ ZoneMap all_traversable(const TerrainPoints& t) {
 
 void prohibit(ZoneMap& zones, int x, int y, Zone zone = Zone::step) {
   zones.zone(x, y) = static_cast<std::uint8_t>(zone);
+}
+
+// Rows from..to - 1 across the whole view, column x given zone_of(x).
+template <class ZoneOfColumn>
+void prohibit_rows(ZoneMap& zones, int from, int to, ZoneOfColumn zone_of) {
+  for (int y = from; y < to; ++y)
+    for (int x = 0; x < zones.width(); ++x)
+      prohibit(zones, x, y, zone_of(x));
+}
+void prohibit_rows(ZoneMap& zones, int from, int to, Zone zone) {
+  prohibit_rows(zones, from, to, [zone](int) { return zone; });
 }
 
 // The documented edge weight, written out again:
@@ -187,9 +194,7 @@ TEST(PlanPath, StartsAtTheNearestTraversablePointInFront) {
   const TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
   ZoneMap zones = all_traversable(t);
   // The first 0.9 m in front is the margin of rocks to the sides: rows 207..190 (2.00..2.85 m).
-  for (int y = 190; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x)
-      prohibit(zones, x, y, Zone::margin);
+  prohibit_rows(zones, 190, g.height, Zone::margin);
   const PathPlan plan = plan_path(t, zones, PlannerOptions{});
   ASSERT_TRUE(plan.found) << plan.reason;
   EXPECT_EQ(plan.start, (PixelPoint{20, 189}));
@@ -203,9 +208,7 @@ TEST(PlanPath, TakesNoStartBehindAStepStraightAhead) {
   // A rock 2.00-2.35 m ahead (rows 207..200) spanning the centre column, the ground beyond it
   // open: the nearest traversable point in front lies behind the rock.
   ZoneMap rock = all_traversable(t);
-  for (int y = 200; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x)
-      prohibit(rock, x, y, x == 20 ? Zone::step : Zone::margin);
+  prohibit_rows(rock, 200, g.height, [](int x) { return x == 20 ? Zone::step : Zone::margin; });
   const PathPlan blocked = plan_path(t, rock, PlannerOptions{});
   EXPECT_FALSE(blocked.found);
   EXPECT_NE(blocked.reason.find("step or slope 2.00 m straight ahead"), std::string::npos)
@@ -213,9 +216,7 @@ TEST(PlanPath, TakesNoStartBehindAStepStraightAhead) {
   // The same rock 0.30 m to the side (column 26) is outside the 0.25 m the start is sought in:
   // the start is the nearest traversable point straight ahead, 2.40 m away.
   ZoneMap aside = all_traversable(t);
-  for (int y = 200; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x)
-      prohibit(aside, x, y, x == 26 ? Zone::step : Zone::margin);
+  prohibit_rows(aside, 200, g.height, [](int x) { return x == 26 ? Zone::step : Zone::margin; });
   const PathPlan beside = plan_path(t, aside, PlannerOptions{});
   ASSERT_TRUE(beside.found) << beside.reason;
   EXPECT_EQ(beside.start, (PixelPoint{20, 199}));
@@ -227,9 +228,7 @@ TEST(PlanPath, TriesTheNextStartBeyondADeadEndInFront) {
   // Open ground 2.00-2.35 m ahead (rows 207..200), closed across the whole view by a margin
   // 2.40-2.85 m ahead (rows 199..190), open again beyond: the nearest start leads nowhere.
   ZoneMap zones = all_traversable(t);
-  for (int y = 190; y < 200; ++y)
-    for (int x = 0; x < g.width; ++x)
-      prohibit(zones, x, y, Zone::margin);
+  prohibit_rows(zones, 190, 200, Zone::margin);
   PlannerOptions nearest_only;
   nearest_only.start_attempts = 1;
   const PathPlan dead_end = plan_path(t, zones, nearest_only);
@@ -248,9 +247,7 @@ TEST(PlanPath, ReportsWhyThereIsNoPath) {
   const GridSpec g = long_grid();
   const TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
   ZoneMap blocked_front = all_traversable(t);
-  for (int y = 150; y < g.height; ++y)
-    for (int x = 0; x < g.width; ++x)
-      prohibit(blocked_front, x, y);
+  prohibit_rows(blocked_front, 150, g.height, Zone::step);
   const PathPlan no_start = plan_path(t, blocked_front, PlannerOptions{});
   EXPECT_FALSE(no_start.found);
   EXPECT_NE(no_start.reason.find("in front of the rover"), std::string::npos) << no_start.reason;

@@ -14,12 +14,7 @@ using testing::grid_forward;
 using testing::grid_left;
 using testing::grid_terrain;
 using testing::GridSpec;
-
-// A 5 cm grid from 2.0 m (row 207) to 12.35 m (row 0) ahead, columns 0.05 m apart, column 20
-// straight ahead.
-GridSpec long_grid() {
-  return GridSpec{41, 208, 0.05, 2.0};
-}
+using testing::long_grid;
 
 TEST(StartApproach, FollowsTheLineFromTheRoverCentreToTheStart) {
   const GridSpec g = long_grid();
@@ -61,6 +56,8 @@ TEST(StartApproach, LeavesOutRowsWhereTheLineMeetsNoKnownPoint) {
   const auto wider = start_approach(t, PixelPoint{20, 140}, 0.06);
   ASSERT_EQ(wider.size(), 66U);
   EXPECT_EQ(wider[18], (PixelPoint{19, 160})); // the leftmost of the two
+  // A start with no known point of its own has no line to follow.
+  EXPECT_TRUE(start_approach(t, PixelPoint{20, 150}).empty());
 }
 
 } // namespace

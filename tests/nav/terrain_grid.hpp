@@ -17,6 +17,12 @@ struct GridSpec {
   double nearest_m = 2.0; ///< forward distance of the bottom row
 };
 
+/// The planner tests' view: 41 columns (column 20 straight ahead) by 208 rows on a 5 cm grid,
+/// row 207 2.0 m ahead up to row 0 12.35 m ahead, reaching the 10-12 m target band.
+inline GridSpec long_grid() {
+  return GridSpec{41, 208, 0.05, 2.0};
+}
+
 /// Forward distance of row y and lateral offset of column x (left positive, centre column 0).
 inline double grid_forward(const GridSpec& g, int y) {
   return g.nearest_m + g.cell_m * (g.height - 1 - y);

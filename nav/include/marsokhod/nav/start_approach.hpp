@@ -12,7 +12,7 @@ namespace marsokhod::nav {
 /// start of a path (the first leg of the drive commands): in each row below the start's, the
 /// known pixel whose ground point lies nearest the line from the rover centre to the start's
 /// ground point, when it lies within `tolerance_m` of that line and short of the start. Rows
-/// the line does not cross in view give no pixel.
+/// the line does not cross in view give no pixel; a start with no known point gives none.
 std::pmr::vector<PixelPoint>
 start_approach(const TerrainPoints& terrain, PixelPoint start, double tolerance_m = 0.05,
                std::pmr::memory_resource* memory = std::pmr::get_default_resource());
