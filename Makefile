@@ -34,7 +34,7 @@ sanitize: setup
 	@sh scripts/sanitize.sh $(SANITIZE_SCOPE)
 
 format:
-	@find nav world emulator occam_port apps tests benches \( -name '*.cpp' -o -name '*.hpp' \) -print0 | xargs -0 clang-format -i
+	@find imaging nav world emulator occam_port apps tests benches \( -name '*.cpp' -o -name '*.hpp' \) -print0 | xargs -0 clang-format -i
 
 clean:
 	@rm -rf build

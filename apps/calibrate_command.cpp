@@ -3,10 +3,10 @@
 
 #include "command.hpp"
 
-#include "marsokhod/nav/camera.hpp"
-#include "marsokhod/nav/image_io.hpp"
-#include "marsokhod/nav/navigation.hpp"
-#include "marsokhod/nav/vertical_parallax_calibration.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/nav/calibration/vertical_parallax_calibration.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -31,22 +31,22 @@ struct CalibrateCli {
   bool json = false;
 };
 
-nav::Image<std::uint8_t> read_grey(const fs::path& path) {
+imaging::Image<std::uint8_t> read_grey(const fs::path& path) {
   try {
-    return nav::read_gray8(path);
-  } catch (const nav::ImageError& error) {
+    return imaging::read_gray8(path);
+  } catch (const imaging::ImageError& error) {
     throw CommandError(error.what());
   }
 }
 
 // The rover's own search range at this image size unless the user gives one.
 int default_max_disparity(int width, int height) {
-  nav::RigParameters parameters;
+  imaging::RigParameters parameters;
   parameters.width_px = width;
   parameters.height_px = height;
   try {
-    return nav::rover_max_disparity(nav::StereoRig(parameters), {});
-  } catch (const nav::RigError&) {
+    return nav::rover_max_disparity(imaging::StereoRig(parameters), {});
+  } catch (const imaging::RigError&) {
     return width / 4;
   }
 }
@@ -91,8 +91,8 @@ nlohmann::ordered_json summary_json(const nav::CalibrationResult& result, const 
 }
 
 int run_calibrate(const CalibrateCli& cli) {
-  const nav::Image<std::uint8_t> left = read_grey(cli.left);
-  const nav::Image<std::uint8_t> right = read_grey(cli.right);
+  const imaging::Image<std::uint8_t> left = read_grey(cli.left);
+  const imaging::Image<std::uint8_t> right = read_grey(cli.right);
   nav::CalibrationOptions options;
   options.max_disparity =
       cli.max_disparity.value_or(default_max_disparity(left.width(), left.height()));

@@ -3,8 +3,8 @@
 
 #include "command.hpp"
 
-#include "marsokhod/nav/colormap.hpp"
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/pictures/colormap.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -18,8 +18,6 @@
 
 namespace marsokhod::apps {
 namespace {
-
-namespace nav = marsokhod::nav;
 
 struct InfoOptions {
   std::string file;
@@ -61,7 +59,7 @@ std::string format_name(const std::string& file) {
 }
 
 template <class T>
-SampleStats sample_stats(const nav::Image<T>& image) {
+SampleStats sample_stats(const imaging::Image<T>& image) {
   SampleStats stats;
   const T* samples = image.data();
   for (std::size_t i = 0; i < image.size(); ++i) {
@@ -89,7 +87,7 @@ constexpr const char* sample_type() {
 }
 
 template <class T>
-nlohmann::json describe(const std::string& file, const nav::Image<T>& image) {
+nlohmann::json describe(const std::string& file, const imaging::Image<T>& image) {
   const SampleStats stats = sample_stats(image);
   nlohmann::json info = {{"file", file},
                          {"format", format_name(file)},
@@ -115,7 +113,7 @@ std::string text_value(const nlohmann::json& value) {
 }
 
 int run_info(const InfoOptions& options) {
-  const nav::AnyImage image = nav::read_image(options.file);
+  const imaging::AnyImage image = imaging::read_image(options.file);
   const nlohmann::json info =
       std::visit([&](const auto& pixels) { return describe(options.file, pixels); }, image);
   if (options.json) {
@@ -137,15 +135,15 @@ int run_info(const InfoOptions& options) {
 }
 
 template <class T>
-nav::Image<float> to_float(const nav::Image<T>& image) {
-  nav::Image<float> field(image.width(), image.height(), image.channels());
+imaging::Image<float> to_float(const imaging::Image<T>& image) {
+  imaging::Image<float> field(image.width(), image.height(), image.channels());
   for (std::size_t i = 0; i < image.size(); ++i)
     field.data()[i] = static_cast<float>(image.data()[i]);
   return field;
 }
 
-nav::Image<float> to_float(nav::AnyImage&& image) {
-  if (auto* floats = std::get_if<nav::Image<float>>(&image))
+imaging::Image<float> to_float(imaging::AnyImage&& image) {
+  if (auto* floats = std::get_if<imaging::Image<float>>(&image))
     return std::move(*floats);
   return std::visit([](const auto& pixels) { return to_float(pixels); }, image);
 }
@@ -164,24 +162,24 @@ int run_convert(const ConvertOptions& options) {
     throw UsageError("--min and --max must be finite numbers");
   if (has_min && has_max && !(options.min < options.max))
     throw UsageError(fmt::format("--min {} must be below --max {}", options.min, options.max));
-  nav::AnyImage image = nav::read_image(options.input);
+  imaging::AnyImage image = imaging::read_image(options.input);
   if (options.colour) {
-    const nav::Image<float> field = to_float(std::move(image));
+    const imaging::Image<float> field = to_float(std::move(image));
     if (field.channels() != 1)
       throw CommandError(fmt::format("{}: --colour needs a one-channel image, found {} channels",
                                      options.input, field.channels()));
-    nav::ColormapOptions colour;
+    imaging::ColormapOptions colour;
     if (has_min)
       colour.min_value = static_cast<float>(options.min);
     if (has_max)
       colour.max_value = static_cast<float>(options.max);
     colour.unit = options.unit;
     colour.title = options.title;
-    nav::write_image(options.output, nav::false_colour(field, colour).view());
+    imaging::write_image(options.output, imaging::false_colour(field, colour).view());
   } else if (ends_with_pfm(options.output)) {
-    nav::write_image(options.output, to_float(std::move(image)).view());
+    imaging::write_image(options.output, to_float(std::move(image)).view());
   } else {
-    std::visit([&](const auto& pixels) { nav::write_image(options.output, pixels.view()); }, image);
+    std::visit([&](const auto& pixels) { imaging::write_image(options.output, pixels.view()); }, image);
   }
   fmt::print("wrote {}\n", options.output);
   return kSuccess;

@@ -3,10 +3,10 @@
 #include "command.hpp"
 #include "nav_outputs.hpp"
 
-#include "marsokhod/nav/camera.hpp"
-#include "marsokhod/nav/image_io.hpp"
-#include "marsokhod/nav/navigation.hpp"
-#include "marsokhod/nav/vertical_parallax.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/nav/calibration/vertical_parallax.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -41,40 +41,40 @@ struct NavCli {
   bool json = false;
 };
 
-nav::Image<std::uint8_t> read_grey(const fs::path& path) {
+imaging::Image<std::uint8_t> read_grey(const fs::path& path) {
   try {
-    return nav::read_gray8(path);
-  } catch (const nav::ImageError& error) {
+    return imaging::read_gray8(path);
+  } catch (const imaging::ImageError& error) {
     throw CommandError(error.what());
   }
 }
 
-nav::StereoRig rig_for(const NavCli& cli, int width, int height) {
+imaging::StereoRig rig_for(const NavCli& cli, int width, int height) {
   if (!cli.rig_file) {
-    nav::RigParameters parameters;
+    imaging::RigParameters parameters;
     parameters.width_px = width;
     parameters.height_px = height;
     try {
-      return nav::StereoRig(parameters);
-    } catch (const nav::RigError& error) {
+      return imaging::StereoRig(parameters);
+    } catch (const imaging::RigError& error) {
       throw CommandError(fmt::format("{}: {}x{} images are too small or too large for the rig: {}",
                                      cli.left.string(), width, height, error.what()));
     }
   }
   try {
-    nav::StereoRig rig = nav::StereoRig::load(*cli.rig_file);
+    imaging::StereoRig rig = imaging::StereoRig::load(*cli.rig_file);
     if (rig.width() != width || rig.height() != height)
       throw CommandError(fmt::format("{}: the rig is {}x{} but the images are {}x{}",
                                      cli.rig_file->string(), rig.width(), rig.height(), width,
                                      height));
     return rig;
-  } catch (const nav::RigError& error) {
+  } catch (const imaging::RigError& error) {
     throw CommandError(error.what());
   }
 }
 
 // The right image with the calibrated vertical parallax removed, or unchanged without one.
-nav::Image<std::uint8_t> aligned_right(const NavCli& cli, nav::Image<std::uint8_t> right) {
+imaging::Image<std::uint8_t> aligned_right(const NavCli& cli, imaging::Image<std::uint8_t> right) {
   if (!cli.calibration_file)
     return right;
   try {
@@ -88,11 +88,11 @@ nav::Image<std::uint8_t> aligned_right(const NavCli& cli, nav::Image<std::uint8_
 
 // +inf is the Middlebury "unknown"; anything else that is not a finite disparity >= 0 is an
 // error in the file, not something to guess around.
-nav::Image<float> read_disparity(const fs::path& path, int width, int height) {
-  nav::Image<float> disparity;
+imaging::Image<float> read_disparity(const fs::path& path, int width, int height) {
+  imaging::Image<float> disparity;
   try {
-    disparity = nav::read_pfm(path);
-  } catch (const nav::ImageError& error) {
+    disparity = imaging::read_pfm(path);
+  } catch (const imaging::ImageError& error) {
     throw CommandError(error.what());
   }
   if (disparity.width() != width || disparity.height() != height)
@@ -111,7 +111,7 @@ nav::Image<float> read_disparity(const fs::path& path, int width, int height) {
 }
 
 // The attitude the world placed the rover in, as its scene.json records it.
-nav::Attitude scene_attitude(const fs::path& path) {
+imaging::Attitude scene_attitude(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw CommandError(fmt::format("{}: cannot open the scene file", path.string()));
@@ -145,20 +145,20 @@ void print_summary(const nav::NavigationResult& result, const fs::path& out, dou
 }
 
 int run_nav(const NavCli& cli) {
-  const nav::Image<std::uint8_t> left = read_grey(cli.left);
-  nav::Image<std::uint8_t> right = read_grey(cli.right);
+  const imaging::Image<std::uint8_t> left = read_grey(cli.left);
+  imaging::Image<std::uint8_t> right = read_grey(cli.right);
   if (left.width() != right.width() || left.height() != right.height())
     throw CommandError(fmt::format("{} is {}x{} but {} is {}x{}; a stereo pair has one size",
                                    cli.left.string(), left.width(), left.height(),
                                    cli.right.string(), right.width(), right.height()));
-  const nav::StereoRig rig = rig_for(cli, left.width(), left.height());
+  const imaging::StereoRig rig = rig_for(cli, left.width(), left.height());
   right = aligned_right(cli, std::move(right));
   nav::NavigationOptions options;
   options.attitude =
-      cli.scene_file ? scene_attitude(*cli.scene_file) : nav::Attitude{cli.pitch_deg, cli.roll_deg};
+      cli.scene_file ? scene_attitude(*cli.scene_file) : imaging::Attitude{cli.pitch_deg, cli.roll_deg};
   options.planner.heading_deg = cli.heading_deg;
   options.zones.max_step_m = cli.max_step_m;
-  std::optional<nav::Image<float>> given;
+  std::optional<imaging::Image<float>> given;
   if (cli.disparity_file)
     given = read_disparity(*cli.disparity_file, left.width(), left.height());
   prepare_output_folder(cli.out);
@@ -173,7 +173,7 @@ int run_nav(const NavCli& cli) {
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const nav::Image<float>& disparity = given ? *given : result.stereo.disparity;
+  const imaging::Image<float>& disparity = given ? *given : result.stereo.disparity;
   const auto written = write_navigation_outputs(cli.out, left, disparity, result);
   if (!cli.json) {
     print_summary(result, cli.out, seconds);

@@ -2,8 +2,8 @@
 
 #include "command.hpp"
 
-#include "marsokhod/nav/colormap.hpp"
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/pictures/colormap.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <fmt/format.h>
 
@@ -22,7 +22,7 @@ constexpr Rgb kFractureYellow{255, 220, 0};
 constexpr Rgb kStartGreen{40, 220, 60};
 constexpr Rgb kTargetBlue{40, 120, 255};
 
-void paint(nav::Image<std::uint8_t>& picture, int x, int y, int radius, const Rgb& colour) {
+void paint(imaging::Image<std::uint8_t>& picture, int x, int y, int radius, const Rgb& colour) {
   for (int dy = -radius; dy <= radius; ++dy)
     for (int dx = -radius; dx <= radius; ++dx)
       if (picture.contains(x + dx, y + dy))
@@ -35,16 +35,16 @@ nlohmann::ordered_json ground_point(const nav::GroundPoint& p) {
 }
 
 template <class T>
-void write_or_fail(const fs::path& path, const nav::Image<T>& image) {
+void write_or_fail(const fs::path& path, const imaging::Image<T>& image) {
   try {
-    nav::write_image(path, image.view());
+    imaging::write_image(path, image.view());
   } catch (const std::exception& error) {
     throw CommandError(error.what());
   }
 }
 
-nav::ColormapOptions colour_options(const char* unit, const char* title) {
-  nav::ColormapOptions options;
+imaging::ColormapOptions colour_options(const char* unit, const char* title) {
+  imaging::ColormapOptions options;
   options.unit = unit;
   options.title = title;
   return options;
@@ -52,8 +52,8 @@ nav::ColormapOptions colour_options(const char* unit, const char* title) {
 
 } // namespace
 
-nav::Image<std::uint8_t> zone_picture(const nav::ZoneMap& zones) {
-  nav::Image<std::uint8_t> picture(zones.width(), zones.height());
+imaging::Image<std::uint8_t> zone_picture(const nav::ZoneMap& zones) {
+  imaging::Image<std::uint8_t> picture(zones.width(), zones.height());
   for (int y = 0; y < zones.height(); ++y)
     for (int x = 0; x < zones.width(); ++x) {
       const nav::Zone zone = zones.at(x, y);
@@ -64,9 +64,9 @@ nav::Image<std::uint8_t> zone_picture(const nav::ZoneMap& zones) {
   return picture;
 }
 
-nav::Image<std::uint8_t> path_overlay(const nav::Image<std::uint8_t>& left,
+imaging::Image<std::uint8_t> path_overlay(const imaging::Image<std::uint8_t>& left,
                                       const nav::NavigationResult& result) {
-  nav::Image<std::uint8_t> picture(left.width(), left.height(), 3);
+  imaging::Image<std::uint8_t> picture(left.width(), left.height(), 3);
   for (int y = 0; y < left.height(); ++y)
     for (int x = 0; x < left.width(); ++x)
       for (int c = 0; c < 3; ++c)
@@ -111,8 +111,8 @@ nlohmann::ordered_json path_json(const nav::NavigationResult& result) {
 }
 
 std::map<std::string, fs::path> write_navigation_outputs(const fs::path& folder,
-                                                         const nav::Image<std::uint8_t>& left,
-                                                         const nav::Image<float>& disparity,
+                                                         const imaging::Image<std::uint8_t>& left,
+                                                         const imaging::Image<float>& disparity,
                                                          const nav::NavigationResult& result) {
   std::map<std::string, fs::path> written;
   auto put = [&](const std::string& key, const std::string& name, const auto& image) {
@@ -121,11 +121,11 @@ std::map<std::string, fs::path> write_navigation_outputs(const fs::path& folder,
   };
   put("disparity", "disparity.pfm", disparity);
   put("disparity_png", "disparity.png",
-      nav::false_colour(disparity, colour_options("px", "disparity")));
+      imaging::false_colour(disparity, colour_options("px", "disparity")));
   put("range", "range.pfm", result.terrain.range);
   put("elevation", "elevation.pfm", result.terrain.elevation);
   put("elevation_png", "elevation.png",
-      nav::false_colour(result.terrain.elevation, colour_options("m", "elevation")));
+      imaging::false_colour(result.terrain.elevation, colour_options("m", "elevation")));
   put("zones", "zones.png", zone_picture(result.zones));
   put("path_overlay", "path_overlay.png", path_overlay(left, result));
   const fs::path json_path = folder / "path.json";

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "marsokhod/nav/image.hpp"
-#include "marsokhod/nav/navigation.hpp"
+#include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -19,11 +19,11 @@ inline constexpr std::uint8_t kZoneMarginGrey = 160;
 inline constexpr std::uint8_t kZoneBlack = 0;
 
 /// zones.png's pixels for a zone map.
-nav::Image<std::uint8_t> zone_picture(const nav::ZoneMap& zones);
+imaging::Image<std::uint8_t> zone_picture(const nav::ZoneMap& zones);
 
 /// The left image in colour with the path drawn over it (fig. 4c): the path red, the fracture
 /// points yellow, the start green and the target blue.
-nav::Image<std::uint8_t> path_overlay(const nav::Image<std::uint8_t>& left,
+imaging::Image<std::uint8_t> path_overlay(const imaging::Image<std::uint8_t>& left,
                                       const nav::NavigationResult& result);
 
 /// The path.json document: found, reason (when not found), the pixel path, the ground
@@ -33,7 +33,7 @@ nlohmann::ordered_json path_json(const nav::NavigationResult& result);
 /// Writes every output of `marsokhod nav` into `folder` (which must exist) and returns output
 /// name -> file path. Throws CommandError naming a file that cannot be written.
 std::map<std::string, std::filesystem::path>
-write_navigation_outputs(const std::filesystem::path& folder, const nav::Image<std::uint8_t>& left,
-                         const nav::Image<float>& disparity, const nav::NavigationResult& result);
+write_navigation_outputs(const std::filesystem::path& folder, const imaging::Image<std::uint8_t>& left,
+                         const imaging::Image<float>& disparity, const nav::NavigationResult& result);
 
 } // namespace marsokhod::apps

@@ -1,7 +1,7 @@
 #include "command.hpp"
 
-#include "marsokhod/nav/camera.hpp"
-#include "marsokhod/nav/rig_geometry.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/imaging/rig/rig_geometry.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -26,19 +26,19 @@ struct RigOptions {
   bool json = false;
 };
 
-nav::StereoRig make_rig(const RigOptions& options) {
-  nav::RigParameters parameters;
+imaging::StereoRig make_rig(const RigOptions& options) {
+  imaging::RigParameters parameters;
   if (!options.rig_file.empty())
-    parameters = nav::StereoRig::load(options.rig_file).parameters();
+    parameters = imaging::StereoRig::load(options.rig_file).parameters();
   if (options.size) {
     parameters.width_px = *options.size;
     parameters.height_px = *options.size;
   }
-  return nav::StereoRig(parameters);
+  return imaging::StereoRig(parameters);
 }
 
 // Every 16th row and the bottom row, where the blind zone ends.
-std::vector<int> table_rows(const nav::StereoRig& rig) {
+std::vector<int> table_rows(const imaging::StereoRig& rig) {
   std::vector<int> rows;
   for (int v = 0; v < rig.height(); v += kRowStep)
     rows.push_back(v);
@@ -52,8 +52,8 @@ nlohmann::ordered_json finite_or_null(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
 }
 
-nlohmann::ordered_json rig_json(const nav::StereoRig& rig) {
-  const nav::RigParameters& p = rig.parameters();
+nlohmann::ordered_json rig_json(const imaging::StereoRig& rig) {
+  const imaging::RigParameters& p = rig.parameters();
   nlohmann::ordered_json json;
   json["rig"] = {{"mast_height_m", p.mast_height_m},
                  {"mast_forward_m", p.mast_forward_m},
@@ -66,14 +66,14 @@ nlohmann::ordered_json rig_json(const nav::StereoRig& rig) {
   json["focal_px"] = rig.focal_px();
   json["vertical_fov_deg"] = rig.vertical_fov_deg();
   json["ground_visible_from_m"] = finite_or_null(rig.ground_visible_from_m());
-  json["horizon_row"] = finite_or_null(nav::horizon_row(rig));
+  json["horizon_row"] = finite_or_null(imaging::horizon_row(rig));
   json["rows"] = nlohmann::ordered_json::array();
   for (int v : table_rows(rig))
     json["rows"].push_back(
         {{"row", v},
-         {"ground_distance_m", finite_or_null(nav::ground_distance_at_row(rig, v))},
+         {"ground_distance_m", finite_or_null(imaging::ground_distance_at_row(rig, v))},
          {"ground_disparity_px", rig.ground_disparity(rig.cx(), v)}});
-  const nav::ObstacleParallax stone = nav::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
+  const imaging::ObstacleParallax stone = imaging::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
   json["stone_14m"] = {{"distance_m", stone.distance_m},
                        {"height_m", stone.height_m},
                        {"top_row", stone.top_row},
@@ -91,8 +91,8 @@ std::string metres_or_dash(double value) {
   return std::isfinite(value) ? fmt::format("{:8.2f}", value) : fmt::format("{:>8}", "-");
 }
 
-void print_text(const nav::StereoRig& rig) {
-  const nav::RigParameters& p = rig.parameters();
+void print_text(const imaging::StereoRig& rig) {
+  const imaging::RigParameters& p = rig.parameters();
   fmt::print("stereo rig: {} x {} px, f = {} mm on a {} mm CCD, baseline {} m, mast {} m, "
              "pitched {} deg down\n",
              p.width_px, p.height_px, p.focal_mm, p.sensor_mm, p.baseline_m, p.mast_height_m,
@@ -101,12 +101,12 @@ void print_text(const nav::StereoRig& rig) {
   fmt::print("  vertical field of view  {:.2f} deg\n", rig.vertical_fov_deg());
   fmt::print("  ground visible from     {:.3f} m ahead of the rover centre\n",
              rig.ground_visible_from_m());
-  fmt::print("  horizon row             {:.2f}\n\n", nav::horizon_row(rig));
+  fmt::print("  horizon row             {:.2f}\n\n", imaging::horizon_row(rig));
   fmt::print("   row  ground (m)  disparity (px)\n");
   for (int v : table_rows(rig))
-    fmt::print("  {:4d}  {}  {:14.3f}\n", v, metres_or_dash(nav::ground_distance_at_row(rig, v)),
+    fmt::print("  {:4d}  {}  {:14.3f}\n", v, metres_or_dash(imaging::ground_distance_at_row(rig, v)),
                rig.ground_disparity(rig.cx(), v));
-  const nav::ObstacleParallax stone = nav::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
+  const imaging::ObstacleParallax stone = imaging::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
   fmt::print("\n{:.0f} cm stone {:.0f} m ahead (paper section 2: \"3 pixels\"):\n",
              stone.height_m * 100.0, stone.distance_m);
   fmt::print("  top {:.3f} px, foot {:.3f} px: top - foot = {:.3f} px\n", stone.top_disparity_px,
@@ -128,7 +128,7 @@ Command make_rig_command(CLI::App& parent) {
       ->check(CLI::IsMember({128, 256}));
   app->add_flag("--json", options->json, "print one JSON object instead of text");
   return {app, [options] {
-            const nav::StereoRig rig = make_rig(*options);
+            const imaging::StereoRig rig = make_rig(*options);
             if (options->json)
               fmt::print("{}\n", rig_json(rig).dump(2));
             else

@@ -3,9 +3,9 @@
 #include "command.hpp"
 #include "stereo_pairs.hpp"
 
-#include "marsokhod/nav/colormap.hpp"
-#include "marsokhod/nav/disparity_metrics.hpp"
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/pictures/colormap.hpp"
+#include "marsokhod/nav/stereo/disparity_metrics.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <fmt/format.h>
 
@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 template <class T>
 void require_size(const StereoEvaluationOptions& options, const StereoPairEntry& entry,
-                  const nav::Image<T>& image, const fs::path& file) {
+                  const imaging::Image<T>& image, const fs::path& file) {
   if (image.width() != entry.width || image.height() != entry.height)
     fail(options, entry,
          fmt::format("{} is {}x{} but the index says {}x{}", file.string(), image.width(),
@@ -40,38 +40,38 @@ auto read_for_entry(const StereoEvaluationOptions& options, const StereoPairEntr
                     Read read) {
   try {
     return read();
-  } catch (const nav::ImageError& error) {
+  } catch (const imaging::ImageError& error) {
     fail(options, entry, error.what());
   }
 }
 
-nav::Image<std::uint8_t> read_grey(const StereoEvaluationOptions& options,
+imaging::Image<std::uint8_t> read_grey(const StereoEvaluationOptions& options,
                                    const StereoPairEntry& entry, const fs::path& file) {
-  nav::Image<std::uint8_t> image =
-      read_for_entry(options, entry, [&] { return nav::read_gray8(file); });
+  imaging::Image<std::uint8_t> image =
+      read_for_entry(options, entry, [&] { return imaging::read_gray8(file); });
   require_size(options, entry, image, file);
   return image;
 }
 
 // value / scale, with 0 (unknown) kept as 0.
 template <class T>
-nav::Image<float> truth_disparity(const nav::Image<T>& stored, double scale) {
-  nav::Image<float> truth(stored.width(), stored.height());
+imaging::Image<float> truth_disparity(const imaging::Image<T>& stored, double scale) {
+  imaging::Image<float> truth(stored.width(), stored.height());
   for (std::size_t i = 0; i < stored.size(); ++i)
     truth.data()[i] = static_cast<float>(static_cast<double>(stored.data()[i]) / scale);
   return truth;
 }
 
-nav::Image<float> read_truth(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
+imaging::Image<float> read_truth(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
   const fs::path& file = *entry.truth;
-  const nav::AnyImage stored =
-      read_for_entry(options, entry, [&] { return nav::read_image(file); });
-  if (const auto* bytes = std::get_if<nav::Image<std::uint8_t>>(&stored);
+  const imaging::AnyImage stored =
+      read_for_entry(options, entry, [&] { return imaging::read_image(file); });
+  if (const auto* bytes = std::get_if<imaging::Image<std::uint8_t>>(&stored);
       bytes && entry.truth_bits == 8) {
     require_size(options, entry, *bytes, file);
     return truth_disparity(*bytes, entry.truth_scale);
   }
-  if (const auto* words = std::get_if<nav::Image<std::uint16_t>>(&stored);
+  if (const auto* words = std::get_if<imaging::Image<std::uint16_t>>(&stored);
       words && entry.truth_bits == 16) {
     require_size(options, entry, *words, file);
     return truth_disparity(*words, entry.truth_scale);
@@ -81,7 +81,7 @@ nav::Image<float> read_truth(const StereoEvaluationOptions& options, const Stere
                    entry.truth_bits));
 }
 
-void distort(nav::Image<std::uint8_t>& image, double gain, double offset) {
+void distort(imaging::Image<std::uint8_t>& image, double gain, double offset) {
   if (gain == 1.0 && offset == 0.0)
     return;
   for (std::size_t i = 0; i < image.size(); ++i)
@@ -100,21 +100,21 @@ int search_range(const StereoEvaluationOptions& options, const StereoPairEntry& 
 }
 
 void write_outputs(const StereoEvaluationOptions& options, const std::string& name,
-                   const nav::Image<float>& disparity) {
+                   const imaging::Image<float>& disparity) {
   const fs::path dir = options.out_dir;
   prepare_output_folder(dir);
-  nav::write_image(dir / (name + "_disparity.pfm"), disparity.view());
-  nav::ColormapOptions colour;
+  imaging::write_image(dir / (name + "_disparity.pfm"), disparity.view());
+  imaging::ColormapOptions colour;
   colour.min_value = 0.0F;
   colour.unit = "px";
   colour.title = "disparity";
-  nav::write_image(dir / (name + "_disparity.png"),
-                   nav::false_colour(disparity.view(), colour).view());
+  imaging::write_image(dir / (name + "_disparity.png"),
+                   imaging::false_colour(disparity.view(), colour).view());
 }
 
 PairEvaluation evaluate(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
-  const nav::Image<std::uint8_t> left = read_grey(options, entry, entry.left);
-  nav::Image<std::uint8_t> right = read_grey(options, entry, entry.right);
+  const imaging::Image<std::uint8_t> left = read_grey(options, entry, entry.left);
+  imaging::Image<std::uint8_t> right = read_grey(options, entry, entry.right);
   distort(right, options.right_gain, options.right_offset);
   PairEvaluation pair;
   pair.name = entry.name;
@@ -135,13 +135,13 @@ PairEvaluation evaluate(const StereoEvaluationOptions& options, const StereoPair
     pair.note = "no ground truth: timed only";
     return pair;
   }
-  const nav::Image<float> truth = read_truth(options, entry);
+  const imaging::Image<float> truth = read_truth(options, entry);
   pair.bad_percent =
       nav::score_bad_pixels(result.disparity.view(), truth.view(), {}, 1.0F).percent();
   // The non-occlusion mask, when present, sits beside the ground truth as <name>_nonocc.pgm.
   const fs::path mask_file = entry.truth->parent_path() / (entry.name + "_nonocc.pgm");
   if (fs::is_regular_file(mask_file)) {
-    const nav::Image<std::uint8_t> mask = read_grey(options, entry, mask_file);
+    const imaging::Image<std::uint8_t> mask = read_grey(options, entry, mask_file);
     pair.bad_percent_nonocc =
         nav::score_bad_pixels(result.disparity.view(), truth.view(), mask.view(), 1.0F).percent();
   }

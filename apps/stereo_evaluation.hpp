@@ -1,6 +1,6 @@
 #pragma once
 
-#include "marsokhod/nav/stereo.hpp"
+#include "marsokhod/nav/stereo/stereo.hpp"
 
 #include <optional>
 #include <string>

@@ -5,10 +5,10 @@
 #include "terrain_pictures.hpp"
 #include "terrain_scoring.hpp"
 
-#include "marsokhod/nav/image_io.hpp"
-#include "marsokhod/nav/navigation.hpp"
-#include "marsokhod/world/renderer.hpp"
-#include "marsokhod/world/terrain.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/world/render/renderer.hpp"
+#include "marsokhod/world/terrain/terrain.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -77,7 +77,7 @@ void write_picture(const std::string& folder, std::uint64_t seed, const TerrainC
   const std::filesystem::path path =
       std::filesystem::path(folder) / fmt::format("seed-{}.png", seed);
   try {
-    nav::write_image(path, terrain_comparison_picture(site).view());
+    imaging::write_image(path, terrain_comparison_picture(site).view());
   } catch (const std::exception& error) {
     throw CommandError(error.what());
   }
@@ -91,9 +91,9 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainCli& cli) {
   const world::Terrain terrain = world::Terrain::generate(settings);
   const world::LitSurface surface(terrain,
                                   world::lighting_preset(world::parse_light_preset(cli.light)));
-  nav::RigParameters rig_parameters;
+  imaging::RigParameters rig_parameters;
   rig_parameters.width_px = rig_parameters.height_px = cli.size;
-  const nav::StereoRig rig(rig_parameters);
+  const imaging::StereoRig rig(rig_parameters);
   world::RenderOptions render;
   render.noise_seed = seed;
   const world::RoverPlacement placement = world::place_rover(terrain.height, world::RoverPose{});

@@ -20,7 +20,7 @@ constexpr Rgb kPathGreen{40, 230, 60};
 constexpr Rgb kTruthPathCyan{0, 220, 230};
 constexpr Rgb kTruthMargin{160, 160, 160};
 
-void put(nav::Image<std::uint8_t>& picture, int x, int y, const Rgb& colour) {
+void put(imaging::Image<std::uint8_t>& picture, int x, int y, const Rgb& colour) {
   for (int c = 0; c < 3; ++c)
     picture(x, y, c) = colour[static_cast<std::size_t>(c)];
 }
@@ -54,7 +54,7 @@ Rgb truth_colour(const TerrainComparison& site, int x, int y) {
   return kObstacleCaught;
 }
 
-void draw_path(nav::Image<std::uint8_t>& picture, const nav::PathPlan& plan, int offset,
+void draw_path(imaging::Image<std::uint8_t>& picture, const nav::PathPlan& plan, int offset,
                const Rgb& colour) {
   if (!plan.found)
     return;
@@ -64,10 +64,10 @@ void draw_path(nav::Image<std::uint8_t>& picture, const nav::PathPlan& plan, int
 
 } // namespace
 
-nav::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison& site) {
+imaging::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison& site) {
   const int width = site.left.width();
   const int height = site.left.height();
-  nav::Image<std::uint8_t> picture(3 * width, height, 3);
+  imaging::Image<std::uint8_t> picture(3 * width, height, 3);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const std::uint8_t grey = site.left(x, y);

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "marsokhod/nav/image.hpp"
-#include "marsokhod/nav/navigation.hpp"
-#include "marsokhod/world/ground_truth.hpp"
+#include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/world/render/ground_truth.hpp"
 
 #include <cstdint>
 
@@ -12,7 +12,7 @@ namespace marsokhod::apps {
 /// judged against ground truth, and the ground-truth zones, side by side (docs/navigation.md,
 /// "Synthetic terrain" gives the colours).
 struct TerrainComparison {
-  const nav::Image<std::uint8_t>& left;
+  const imaging::Image<std::uint8_t>& left;
   const nav::ZoneMap& zones;
   const nav::PathPlan& plan;
   const nav::ZoneMap& truth_zones;
@@ -25,6 +25,6 @@ struct TerrainComparison {
 /// slope orange, as margin yellow; obstacles prohibited white and missed red; pixels inside
 /// the truth's margin (not scored) dark grey, or mid grey when prohibited. The navigation's
 /// path is drawn green on the first two panels, the ground-truth path cyan on the third.
-nav::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison& site);
+imaging::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison& site);
 
 } // namespace marsokhod::apps

@@ -1,6 +1,6 @@
 #include "terrain_scoring.hpp"
 
-#include "marsokhod/nav/start_approach.hpp"
+#include "marsokhod/nav/path/start_approach.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -78,7 +78,7 @@ BandTable score_hazards(const nav::ZoneMap& zones, const world::GroundTruth& tru
 
 nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
                                 const nav::ZoneOptions& options) {
-  nav::ZoneMap zones{nav::Image<std::uint8_t>(terrain.width(), terrain.height()), {}};
+  nav::ZoneMap zones{imaging::Image<std::uint8_t>(terrain.width(), terrain.height()), {}};
   for (int y = 0; y < terrain.height(); ++y)
     for (int x = 0; x < terrain.width(); ++x) {
       nav::Zone zone = nav::Zone::traversable;

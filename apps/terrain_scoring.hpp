@@ -1,7 +1,7 @@
 #pragma once
 
-#include "marsokhod/nav/navigation.hpp"
-#include "marsokhod/world/ground_truth.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/world/render/ground_truth.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,9 +1,9 @@
 #include "command.hpp"
 
-#include "marsokhod/nav/camera.hpp"
-#include "marsokhod/world/renderer.hpp"
-#include "marsokhod/world/scene.hpp"
-#include "marsokhod/world/terrain.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/world/render/renderer.hpp"
+#include "marsokhod/world/scene/scene.hpp"
+#include "marsokhod/world/terrain/terrain.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -43,17 +43,17 @@ double elapsed_ms(Clock::time_point since) {
   return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
 }
 
-nav::RigParameters rig_parameters(const WorldOptions& o) {
-  nav::RigParameters rig =
-      o.rig_file ? nav::StereoRig::load(*o.rig_file).parameters() : nav::RigParameters{};
+imaging::RigParameters rig_parameters(const WorldOptions& o) {
+  imaging::RigParameters rig =
+      o.rig_file ? imaging::StereoRig::load(*o.rig_file).parameters() : imaging::RigParameters{};
   if (o.size)
     rig.width_px = rig.height_px = *o.size;
   rig.right_misalignment.pan_arcsec = o.pan.value_or(rig.right_misalignment.pan_arcsec);
   rig.right_misalignment.tilt_arcsec = o.tilt.value_or(rig.right_misalignment.tilt_arcsec);
   rig.right_misalignment.roll_arcsec = o.roll.value_or(rig.right_misalignment.roll_arcsec);
   try {
-    return nav::StereoRig(rig).parameters();
-  } catch (const nav::RigError& e) {
+    return imaging::StereoRig(rig).parameters();
+  } catch (const imaging::RigError& e) {
     throw UsageError(fmt::format("invalid option value: {}", e.what()));
   }
 }
@@ -128,7 +128,7 @@ int run_world(const WorldOptions& o) {
   start = Clock::now();
   scene.placement = world::place_rover(terrain.height, o.pose);
   const world::RenderedFrame frame = renderer.render_with_ground_truth(
-      nav::StereoRig(scene.rig), scene.placement, surface, scene.render);
+      imaging::StereoRig(scene.rig), scene.placement, surface, scene.render);
   const double render_ms = elapsed_ms(start);
   start = Clock::now();
   try {

@@ -2,10 +2,10 @@
 // prohibited zones, safest path and drive commands (target: at most 5 ms on one core), each
 // stage after stereo on its own, and the chain with a counting meter to show what metering
 // costs. The scene (default site, seed 1, high sun) is rendered once, outside the timed loops.
-#include "marsokhod/nav/navigation.hpp"
-#include "marsokhod/nav/vertical_parallax.hpp"
-#include "marsokhod/world/renderer.hpp"
-#include "marsokhod/world/terrain.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/nav/calibration/vertical_parallax.hpp"
+#include "marsokhod/world/render/renderer.hpp"
+#include "marsokhod/world/terrain/terrain.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -14,16 +14,16 @@ namespace {
 using namespace marsokhod;
 
 struct Scene {
-  nav::StereoRig rig;
+  imaging::StereoRig rig;
   world::RenderedFrame frame;
-  nav::Attitude attitude;
+  imaging::Attitude attitude;
 };
 
 const Scene& scene() {
   static const Scene made = [] {
     const world::Terrain terrain = world::Terrain::generate(world::TerrainSettings{});
     const world::LitSurface surface(terrain, world::lighting_preset(world::LightPreset::high_sun));
-    const nav::StereoRig rig{nav::RigParameters{}};
+    const imaging::StereoRig rig{imaging::RigParameters{}};
     const world::RoverPlacement placement = world::place_rover(terrain.height, world::RoverPose{});
     return Scene{rig, world::Renderer(terrain).render_with_ground_truth(rig, placement, surface),
                  placement.attitude};
@@ -85,7 +85,7 @@ void BM_RemoveVerticalParallax256(benchmark::State& state) {
   const Scene& s = scene();
   const nav::VerticalParallaxMap map{256, 256, {1.5, 1e-3, -2e-3, 1e-6, 2e-6, 3.4e-6}};
   for (auto _ : state) {
-    nav::Image<std::uint8_t> aligned =
+    imaging::Image<std::uint8_t> aligned =
         nav::remove_vertical_parallax(s.frame.images.right, map, Interpolation);
     benchmark::DoNotOptimize(aligned.data());
   }

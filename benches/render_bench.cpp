@@ -1,10 +1,10 @@
 // Ray-casting stereo renderer: a pair with ground truth per frame, and the one-off build of the
 // maximum mipmap. The terrain (default settings, 48 m at 2 cm) is generated once, outside the
 // timed loops. Target: a 256 x 256 pair with ground truth in under 50 ms on one core.
-#include "marsokhod/nav/camera.hpp"
-#include "marsokhod/world/max_mipmap.hpp"
-#include "marsokhod/world/renderer.hpp"
-#include "marsokhod/world/terrain.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/world/render/max_mipmap.hpp"
+#include "marsokhod/world/render/renderer.hpp"
+#include "marsokhod/world/terrain/terrain.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -21,9 +21,9 @@ void BM_RenderPairWithGroundTruth(benchmark::State& state) {
   const world::Terrain& terrain = default_terrain();
   const world::LitSurface surface(terrain, world::lighting_preset(world::LightPreset::high_sun));
   const world::Renderer renderer(terrain);
-  nav::RigParameters parameters;
+  imaging::RigParameters parameters;
   parameters.width_px = parameters.height_px = static_cast<int>(state.range(0));
-  const nav::StereoRig rig(parameters);
+  const imaging::StereoRig rig(parameters);
   const world::RoverPlacement placement = world::place_rover(terrain.height, world::RoverPose{});
   for (auto _ : state) {
     world::RenderedFrame frame = renderer.render_with_ground_truth(rig, placement, surface);

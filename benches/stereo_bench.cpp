@@ -3,12 +3,12 @@
 // enough for the whole navigation chain to fit in 5 ms. The NullMeter figures must equal the
 // figures of a build with metering compiled out (-DMARSOKHOD_NAV_UNMETERED); the CountingMeter
 // and DynamicMeter figures show what metering costs when it is on.
-#include "marsokhod/nav/camera.hpp"
-#include "marsokhod/nav/image_io.hpp"
-#include "marsokhod/nav/stereo.hpp"
-#include "marsokhod/nav/work.hpp"
-#include "marsokhod/world/renderer.hpp"
-#include "marsokhod/world/terrain.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/nav/stereo/stereo.hpp"
+#include "marsokhod/nav/work/work.hpp"
+#include "marsokhod/world/render/renderer.hpp"
+#include "marsokhod/world/terrain/terrain.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -31,8 +31,8 @@ namespace {
 using namespace marsokhod;
 
 struct Pair {
-  nav::Image<std::uint8_t> left;
-  nav::Image<std::uint8_t> right;
+  imaging::Image<std::uint8_t> left;
+  imaging::Image<std::uint8_t> right;
   int max_disparity = 0;
 };
 
@@ -42,8 +42,8 @@ const std::optional<Pair>& tsukuba() {
     const std::filesystem::path dir = std::filesystem::path(MARSOKHOD_SHARED_DATA) / "stereo";
     if (!std::filesystem::exists(dir / "tsukuba_left.pgm"))
       return std::nullopt;
-    return Pair{nav::read_gray8(dir / "tsukuba_left.pgm"),
-                nav::read_gray8(dir / "tsukuba_right.pgm"), 14};
+    return Pair{imaging::read_gray8(dir / "tsukuba_left.pgm"),
+                imaging::read_gray8(dir / "tsukuba_right.pgm"), 14};
   }();
   return pair;
 }
@@ -57,7 +57,7 @@ const Pair& rover_pair() {
     const world::Terrain terrain = world::Terrain::generate(settings);
     const world::LitSurface surface(terrain, world::lighting_preset(world::LightPreset::high_sun));
     const world::Renderer renderer(terrain);
-    const nav::StereoRig rig{nav::RigParameters{}};
+    const imaging::StereoRig rig{imaging::RigParameters{}};
     const world::RoverPlacement placement = world::place_rover(terrain.height, world::RoverPose{});
     world::StereoImages images = renderer.render(rig, placement, surface);
     const double bottom = rig.ground_disparity(rig.cx(), rig.height() - 1);
@@ -165,7 +165,7 @@ BENCHMARK(BM_MarsokhodStereo_rover256<nav::CountingMeter>)
 
 #ifdef MARSOKHOD_HAVE_OPENCV
 
-cv::Mat as_mat(const nav::Image<std::uint8_t>& image) {
+cv::Mat as_mat(const imaging::Image<std::uint8_t>& image) {
   return cv::Mat(image.height(), image.width(), CV_8UC1, const_cast<std::uint8_t*>(image.data()));
 }
 

@@ -1,7 +1,7 @@
 // `marsokhod eval stereo`: the Middlebury bad-1.0 metric over a PAIRS.tsv index, on the real
 // pairs and on synthetic ones (8- and 16-bit ground truth, a pair without ground truth), and
 // clear errors naming the index file and line for bad indexes.
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 #include "nav/stereo_test_support.hpp"
 #include "support/run_marsokhod.hpp"
 
@@ -31,16 +31,16 @@ protected:
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
     const nav::testing::DotPair pair = nav::testing::make_dot_pair(nav::testing::DotScene{});
-    nav::write_image(dir_ / "dots_left.pgm", pair.left.view());
-    nav::write_image(dir_ / "dots_right.pgm", pair.right.view());
-    nav::Image<std::uint8_t> gt8(pair.disparity.width(), pair.disparity.height());
-    nav::Image<std::uint16_t> gt16(pair.disparity.width(), pair.disparity.height());
+    imaging::write_image(dir_ / "dots_left.pgm", pair.left.view());
+    imaging::write_image(dir_ / "dots_right.pgm", pair.right.view());
+    imaging::Image<std::uint8_t> gt8(pair.disparity.width(), pair.disparity.height());
+    imaging::Image<std::uint16_t> gt16(pair.disparity.width(), pair.disparity.height());
     for (std::size_t i = 0; i < gt8.size(); ++i) {
       gt8.data()[i] = static_cast<std::uint8_t>(pair.disparity.data()[i] * 4);
       gt16.data()[i] = static_cast<std::uint16_t>(pair.disparity.data()[i] * 256);
     }
-    nav::write_image(dir_ / "dots_gt.pgm", gt8.view());
-    nav::write_image(dir_ / "dots_gt16.pgm", gt16.view());
+    imaging::write_image(dir_ / "dots_gt.pgm", gt8.view());
+    imaging::write_image(dir_ / "dots_gt16.pgm", gt16.view());
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -84,7 +84,7 @@ TEST_F(EvalStereoCommand, WritesEachPairsDisparityWithOut) {
   const auto result = run_marsokhod("eval stereo '" + file.string() + "' --out '" + out.string() + "'");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("eight"), std::string::npos);
-  const nav::Image<float> disparity = nav::read_pfm(out / "eight_disparity.pfm");
+  const imaging::Image<float> disparity = imaging::read_pfm(out / "eight_disparity.pfm");
   EXPECT_EQ(disparity.width(), 128);
   EXPECT_TRUE(fs::exists(out / "eight_disparity.png"));
 }

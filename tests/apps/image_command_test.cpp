@@ -1,7 +1,7 @@
 // Runs the built `marsokhod image` command on files written here and checks exit codes,
 // messages and output.
 
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -142,8 +142,8 @@ TEST_F(ImageCommand, MalformedFilesExitOneNamingFileAndProblem) {
   };
   Bytes png;
   {
-    nav::Image<std::uint8_t> image(8, 8, 1, 100);
-    nav::write_image(file("valid.png"), image.view());
+    imaging::Image<std::uint8_t> image(8, 8, 1, 100);
+    imaging::write_image(file("valid.png"), image.view());
     png = read(file("valid.png"));
   }
   Bytes truncated_png(png.begin(), png.begin() + static_cast<std::ptrdiff_t>(png.size() / 2));
@@ -209,12 +209,12 @@ TEST_F(ImageCommand, InfoJsonDescribesTheImage) {
 }
 
 TEST_F(ImageCommand, InfoCountsNonFiniteFloatsSeparately) {
-  nav::Image<float> field(2, 2);
+  imaging::Image<float> field(2, 2);
   field(0, 0) = std::numeric_limits<float>::infinity();
   field(1, 0) = std::numeric_limits<float>::quiet_NaN();
   field(0, 1) = -1.5F;
   field(1, 1) = 4.5F;
-  nav::write_image(file("d.pfm"), field.view());
+  imaging::write_image(file("d.pfm"), field.view());
   const CommandResult result = run("image info --json " + quoted(file("d.pfm")));
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json info = nlohmann::json::parse(result.out);
@@ -239,27 +239,27 @@ TEST_F(ImageCommand, InfoTextNamesEachField) {
 TEST_F(ImageCommand, ConvertKeepsPixelsAcrossFormats) {
   const fs::path input = write("g.pgm", text_bytes("P5 3 1 65535\n", {0, 1, 0x80, 0, 0xff, 0xff}));
   ASSERT_EQ(run("image convert " + quoted(input) + " " + quoted(file("g.png"))).exit_code, 0);
-  const nav::AnyImage back = nav::read_image(file("g.png"));
-  const auto& image = std::get<nav::Image<std::uint16_t>>(back);
+  const imaging::AnyImage back = imaging::read_image(file("g.png"));
+  const auto& image = std::get<imaging::Image<std::uint16_t>>(back);
   EXPECT_EQ(image(0, 0), 1);
   EXPECT_EQ(image(1, 0), 0x8000);
   EXPECT_EQ(image(2, 0), 0xffff);
   ASSERT_EQ(run("image convert " + quoted(input) + " " + quoted(file("g.pfm"))).exit_code, 0);
-  EXPECT_EQ(nav::read_pfm(file("g.pfm"))(1, 0), 32768.0F);
+  EXPECT_EQ(imaging::read_pfm(file("g.pfm"))(1, 0), 32768.0F);
 }
 
 TEST_F(ImageCommand, ConvertColourRendersAPictureWithLegend) {
-  nav::Image<float> field(64, 48);
+  imaging::Image<float> field(64, 48);
   for (int y = 0; y < 48; ++y)
     for (int x = 0; x < 64; ++x)
       field(x, y) = static_cast<float>(x);
-  nav::write_image(file("d.pfm"), field.view());
+  imaging::write_image(file("d.pfm"), field.view());
   const CommandResult result =
       run("image convert " + quoted(file("d.pfm")) + " " + quoted(file("d.png")) +
           " --colour --min 0 --max 63 --unit px --title disparity");
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const nav::AnyImage picture = nav::read_image(file("d.png"));
-  const auto& rgb = std::get<nav::Image<std::uint8_t>>(picture);
+  const imaging::AnyImage picture = imaging::read_image(file("d.png"));
+  const auto& rgb = std::get<imaging::Image<std::uint8_t>>(picture);
   EXPECT_EQ(rgb.channels(), 3);
   EXPECT_GT(rgb.width(), 64);
   // Column 0 holds the minimum: viridis' first colour (68, 1, 84).
@@ -276,7 +276,7 @@ TEST_F(ImageCommand, ConvertColourNeedsOneChannel) {
 }
 
 TEST_F(ImageCommand, ConvertFloatToIntegerFormatIsRefused) {
-  nav::write_image(file("d.pfm"), nav::Image<float>(2, 2).view());
+  imaging::write_image(file("d.pfm"), imaging::Image<float>(2, 2).view());
   const CommandResult result =
       run("image convert " + quoted(file("d.pfm")) + " " + quoted(file("d.png")));
   expect_bad_file(result, file("d.png"), "float pixels go to .pfm");

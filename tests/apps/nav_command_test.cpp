@@ -1,7 +1,7 @@
 #include "support/run_marsokhod.hpp"
 
-#include "marsokhod/nav/image.hpp"
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -18,7 +18,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-using marsokhod::nav::Image;
+using marsokhod::imaging::Image;
 using marsokhod::testing::run_marsokhod;
 
 fs::path fresh_folder(const std::string& name) {
@@ -81,9 +81,9 @@ TEST(NavCommand, WritesEveryOutputAndThePathDocument) {
   const auto summary = nlohmann::json::parse(result.out);
   EXPECT_EQ(summary["found"], path["found"]);
   EXPECT_EQ(summary["outputs"]["zones"], (out / "zones.png").string());
-  const auto zones = marsokhod::nav::read_gray8(out / "zones.png");
+  const auto zones = marsokhod::imaging::read_gray8(out / "zones.png");
   EXPECT_EQ(zones.width(), 128);
-  const auto overlay = marsokhod::nav::read_image(out / "path_overlay.png");
+  const auto overlay = marsokhod::imaging::read_image(out / "path_overlay.png");
   EXPECT_EQ(std::get<Image<std::uint8_t>>(overlay).channels(), 3);
 }
 
@@ -106,7 +106,7 @@ TEST(NavCommand, GroundTruthDisparityOfTheSceneGivesAPath) {
 }
 
 void write_grey(const fs::path& path, int width, int height, std::uint8_t grey) {
-  marsokhod::nav::write_image(path, Image<std::uint8_t>(width, height, 1, grey).view());
+  marsokhod::imaging::write_image(path, Image<std::uint8_t>(width, height, 1, grey).view());
 }
 
 TEST(NavCommand, ImagesOfDifferentSizesAreAnErrorNamingBoth) {
@@ -148,7 +148,7 @@ TEST(NavCommand, NanInADisparityFileIsAnErrorNamingTheFileAndPixel) {
   const fs::path dir = fresh_folder("nan");
   Image<float> disparity(128, 128, 1, 20.0F);
   disparity(5, 7) = std::numeric_limits<float>::quiet_NaN();
-  marsokhod::nav::write_image(dir / "d.pfm", disparity.view());
+  marsokhod::imaging::write_image(dir / "d.pfm", disparity.view());
   const auto result = run_marsokhod(nav_args(dir / "out") + " --disparity " + quoted(dir / "d.pfm"));
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("d.pfm: pixel (5, 7)"), std::string::npos) << result.err;
@@ -157,7 +157,7 @@ TEST(NavCommand, NanInADisparityFileIsAnErrorNamingTheFileAndPixel) {
 TEST(NavCommand, InfiniteDisparitiesAreUnknownGroundAndGiveNoPath) {
   const fs::path dir = fresh_folder("inf");
   const Image<float> unknown(128, 128, 1, std::numeric_limits<float>::infinity());
-  marsokhod::nav::write_image(dir / "d.pfm", unknown.view());
+  marsokhod::imaging::write_image(dir / "d.pfm", unknown.view());
   const auto result =
       run_marsokhod(nav_args(dir / "out") + " --disparity " + quoted(dir / "d.pfm") + " --json");
   ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -169,7 +169,7 @@ TEST(NavCommand, InfiniteDisparitiesAreUnknownGroundAndGiveNoPath) {
 TEST(NavCommand, AFloatImageAsLeftIsAnErrorNamingTheFile) {
   const fs::path dir = fresh_folder("float-left");
   const Image<float> pixels(64, 64, 1, std::numeric_limits<float>::infinity());
-  marsokhod::nav::write_image(dir / "left.pfm", pixels.view());
+  marsokhod::imaging::write_image(dir / "left.pfm", pixels.view());
   const auto result = run_marsokhod("nav " + quoted(dir / "left.pfm") + " " +
                                     quoted(dir / "left.pfm") + " --out " + quoted(dir / "out"));
   EXPECT_EQ(result.exit_code, 1);

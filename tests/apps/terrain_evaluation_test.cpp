@@ -2,7 +2,7 @@
 #include "support/run_marsokhod.hpp"
 #include "terrain_scoring.hpp"
 
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -32,7 +32,7 @@ world::GroundTruth strip_truth() {
 }
 
 nav::ZoneMap strip_zones(std::initializer_list<nav::Zone> zones) {
-  nav::ZoneMap map{nav::Image<std::uint8_t>(4, 1), {}};
+  nav::ZoneMap map{imaging::Image<std::uint8_t>(4, 1), {}};
   int x = 0;
   for (const nav::Zone z : zones)
     map.zone(x++, 0) = static_cast<std::uint8_t>(z);
@@ -78,8 +78,8 @@ TEST(GroundTruthZones, GroundOnlyOneCameraSeesIsUnknownAndObstaclesAreSteps) {
   world::GroundTruth truth = strip_truth();
   truth.valid(2, 0) = 0; // the left camera sees it, the right one does not
   truth.obstacles(0, 0) = 255;
-  nav::TerrainPoints terrain{nav::Image<float>(4, 1, 1, 5.0F), nav::Image<float>(4, 1, 1, 0.0F),
-                             nav::Image<float>(4, 1, 1, 0.0F), nav::Image<float>(4, 1, 1, 5.0F), 4};
+  nav::TerrainPoints terrain{imaging::Image<float>(4, 1, 1, 5.0F), imaging::Image<float>(4, 1, 1, 0.0F),
+                             imaging::Image<float>(4, 1, 1, 0.0F), imaging::Image<float>(4, 1, 1, 5.0F), 4};
   for (int x = 0; x < 4; ++x)
     terrain.left(x, 0) = 0.4F * static_cast<float>(x); // 0.4 m apart: beyond each other's margin
   nav::ZoneOptions options;
@@ -96,14 +96,14 @@ TEST(ElevationErrors, AreTakenOnJudgedFreeGroundWhereTheNavigationHasAPoint) {
   truth.range(3, 0) = 7.0F; // band 6-10 m
   truth.obstacles(1, 0) = 255;
   const float kInf = std::numeric_limits<float>::infinity();
-  nav::TerrainPoints ours{nav::Image<float>(4, 1), nav::Image<float>(4, 1), nav::Image<float>(4, 1),
-                          nav::Image<float>(4, 1), 3};
+  nav::TerrainPoints ours{imaging::Image<float>(4, 1), imaging::Image<float>(4, 1), imaging::Image<float>(4, 1),
+                          imaging::Image<float>(4, 1), 3};
   for (int x = 0; x < 4; ++x) {
     truth.elevation(x, 0) = 0.10F;
     ours.elevation(x, 0) = 0.10F + 0.01F * static_cast<float>(x + 1);
   }
   ours.elevation(2, 0) = kInf; // no point: not scored
-  nav::ZoneMap zones{nav::Image<std::uint8_t>(4, 1, 1, 0), {}};
+  nav::ZoneMap zones{imaging::Image<std::uint8_t>(4, 1, 1, 0), {}};
   std::array<std::vector<float>, kTerrainBands.size()> errors;
   collect_elevation_errors(ours, zones, truth, errors);
   // Pixel 0 (0.01 m off) in 2-6 m; pixel 1 is an obstacle; pixel 3 (0.04 m off) in 6-10 m.
@@ -181,8 +181,8 @@ TEST(EvalTerrainCommand, PicturesShowEachSiteInThreePanels) {
                                     "--pictures '" +
                                     dir.string() + "'");
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const nav::AnyImage picture = nav::read_image(dir / "seed-3.png");
-  const auto* rgb = std::get_if<nav::Image<std::uint8_t>>(&picture);
+  const imaging::AnyImage picture = imaging::read_image(dir / "seed-3.png");
+  const auto* rgb = std::get_if<imaging::Image<std::uint8_t>>(&picture);
   ASSERT_NE(rgb, nullptr);
   EXPECT_EQ(rgb->width(), 3 * 64);
   EXPECT_EQ(rgb->height(), 64);

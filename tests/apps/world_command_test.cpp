@@ -1,6 +1,6 @@
 #include "support/run_marsokhod.hpp"
 
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -54,9 +54,9 @@ TEST(WorldCommand, WritesEveryOutputAndAJsonSummary) {
   EXPECT_GT(valid, 0.2);
   EXPECT_LE(valid, 1.0);
 
-  const auto left = marsokhod::nav::read_gray8(dir / "left.pgm");
+  const auto left = marsokhod::imaging::read_gray8(dir / "left.pgm");
   EXPECT_EQ(left.width(), 64);
-  const auto disparity = marsokhod::nav::read_pfm(dir / "gt_disparity.pfm");
+  const auto disparity = marsokhod::imaging::read_pfm(dir / "gt_disparity.pfm");
   EXPECT_EQ(disparity.height(), 64);
   const auto scene = nlohmann::json::parse(slurp(dir / "scene.json"));
   EXPECT_EQ(scene["terrain"]["seed"], 3);

@@ -1,7 +1,7 @@
 // libFuzzer target for the image decoders: any input must give a well-formed image or an
 // ImageError; anything else (a crash, a sanitizer report, another exception) is a finding.
 
-#include "marsokhod/nav/image_io.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <cstdint>
 #include <cstdlib>
@@ -11,8 +11,8 @@
 namespace {
 
 template <class T>
-void check_well_formed(const marsokhod::nav::Image<T>& image) {
-  using marsokhod::nav::kMaxImageSide;
+void check_well_formed(const marsokhod::imaging::Image<T>& image) {
+  using marsokhod::imaging::kMaxImageSide;
   const bool sides = image.width() >= 1 && image.width() <= kMaxImageSide && image.height() >= 1 &&
                      image.height() <= kMaxImageSide;
   const bool channels = image.channels() == 1 || image.channels() == 3;
@@ -31,10 +31,10 @@ void check_well_formed(const marsokhod::nav::Image<T>& image) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    const marsokhod::nav::AnyImage image =
-        marsokhod::nav::decode_image(std::span<const std::uint8_t>(data, size), "fuzz-input");
+    const marsokhod::imaging::AnyImage image =
+        marsokhod::imaging::decode_image(std::span<const std::uint8_t>(data, size), "fuzz-input");
     std::visit([](const auto& pixels) { check_well_formed(pixels); }, image);
-  } catch (const marsokhod::nav::ImageError&) {
+  } catch (const marsokhod::imaging::ImageError&) {
     // The expected outcome for malformed input.
   }
   return 0;

@@ -3,7 +3,7 @@
 // Synthetic stereo pairs with exactly known disparity for the stereo tests: random-dot
 // stereograms of a background plane and an optional foreground square.
 
-#include "marsokhod/nav/image.hpp"
+#include "marsokhod/imaging/image/image.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,10 +29,10 @@ struct DotScene {
 /// The pair and its truth: disparity of every left pixel, and which left pixels the right
 /// camera sees (not occluded by the square, not off the image's left edge).
 struct DotPair {
-  Image<std::uint8_t> left;
-  Image<std::uint8_t> right;
-  Image<float> disparity;
-  Image<std::uint8_t> seen;
+  imaging::Image<std::uint8_t> left;
+  imaging::Image<std::uint8_t> right;
+  imaging::Image<float> disparity;
+  imaging::Image<std::uint8_t> seen;
 };
 
 inline bool in_square(const DotScene& scene, int x, int y) {
@@ -42,9 +42,9 @@ inline bool in_square(const DotScene& scene, int x, int y) {
 
 /// Random grey levels in 0..255 from raw generator output (no distribution objects, so the
 /// same seed gives the same dots with any standard library).
-inline Image<std::uint8_t> random_dots(int width, int height, std::uint64_t seed) {
+inline imaging::Image<std::uint8_t> random_dots(int width, int height, std::uint64_t seed) {
   std::mt19937_64 generator(seed);
-  Image<std::uint8_t> dots(width, height);
+  imaging::Image<std::uint8_t> dots(width, height);
   for (std::size_t i = 0; i < dots.size(); ++i)
     dots.data()[i] = static_cast<std::uint8_t>(generator() >> 56);
   return dots;
@@ -53,12 +53,12 @@ inline Image<std::uint8_t> random_dots(int width, int height, std::uint64_t seed
 inline DotPair make_dot_pair(const DotScene& scene) {
   // The texture lives on the surfaces: the background's dots and the square's dots, both in
   // left-image coordinates, wide enough for every right pixel to find its dot.
-  const Image<std::uint8_t> background = random_dots(scene.width + 64, scene.height, scene.seed);
-  const Image<std::uint8_t> square = random_dots(scene.width, scene.height, scene.seed + 1);
-  DotPair pair{Image<std::uint8_t>(scene.width, scene.height),
-               Image<std::uint8_t>(scene.width, scene.height),
-               Image<float>(scene.width, scene.height),
-               Image<std::uint8_t>(scene.width, scene.height)};
+  const imaging::Image<std::uint8_t> background = random_dots(scene.width + 64, scene.height, scene.seed);
+  const imaging::Image<std::uint8_t> square = random_dots(scene.width, scene.height, scene.seed + 1);
+  DotPair pair{imaging::Image<std::uint8_t>(scene.width, scene.height),
+               imaging::Image<std::uint8_t>(scene.width, scene.height),
+               imaging::Image<float>(scene.width, scene.height),
+               imaging::Image<std::uint8_t>(scene.width, scene.height)};
   for (int y = 0; y < scene.height; ++y)
     for (int x = 0; x < scene.width; ++x) {
       const bool front = in_square(scene, x, y);
@@ -86,8 +86,8 @@ inline DotPair make_dot_pair(const DotScene& scene) {
 }
 
 /// a * image + b, rounded and clamped to 0..255.
-inline Image<std::uint8_t> gain_offset(const Image<std::uint8_t>& image, double a, double b) {
-  Image<std::uint8_t> out(image.width(), image.height());
+inline imaging::Image<std::uint8_t> gain_offset(const imaging::Image<std::uint8_t>& image, double a, double b) {
+  imaging::Image<std::uint8_t> out(image.width(), image.height());
   for (std::size_t i = 0; i < image.size(); ++i)
     out.data()[i] = static_cast<std::uint8_t>(
         std::clamp(std::lround(a * image.data()[i] + b), 0L, 255L));
@@ -95,8 +95,8 @@ inline Image<std::uint8_t> gain_offset(const Image<std::uint8_t>& image, double 
 }
 
 /// Share of the pixels with mask != 0 whose estimate lies within `tolerance` of the truth.
-inline double share_within(const Image<float>& estimate, const Image<float>& truth,
-                           const Image<std::uint8_t>& mask, float tolerance) {
+inline double share_within(const imaging::Image<float>& estimate, const imaging::Image<float>& truth,
+                           const imaging::Image<std::uint8_t>& mask, float tolerance) {
   long scored = 0;
   long good = 0;
   for (int y = 0; y < truth.height(); ++y)

@@ -4,7 +4,7 @@
 // sees the ground point `cell` metres per pixel from its neighbours, row 0 farthest, so that
 // distances in pixels are distances in metres divided by the cell.
 
-#include "marsokhod/nav/elevation.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
 
 #include <functional>
 
@@ -34,8 +34,8 @@ inline double grid_left(const GridSpec& g, int x) {
 /// Elevation given by `height(forward, left)`; ranges set to match.
 inline TerrainPoints grid_terrain(const GridSpec& g,
                                   const std::function<double(double, double)>& height) {
-  TerrainPoints t{Image<float>(g.width, g.height), Image<float>(g.width, g.height),
-                  Image<float>(g.width, g.height), Image<float>(g.width, g.height), 0};
+  TerrainPoints t{imaging::Image<float>(g.width, g.height), imaging::Image<float>(g.width, g.height),
+                  imaging::Image<float>(g.width, g.height), imaging::Image<float>(g.width, g.height), 0};
   for (int y = 0; y < g.height; ++y) {
     for (int x = 0; x < g.width; ++x) {
       const double forward = grid_forward(g, y);

@@ -5,8 +5,8 @@
 // right camera at -B/2, both mast_forward ahead of and mast_height above the rover centre),
 // not taken from the code under test.
 
-#include "marsokhod/nav/camera.hpp"
-#include "marsokhod/world/terrain.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/world/terrain/terrain.hpp"
 
 #include <Eigen/Core>
 
@@ -44,7 +44,7 @@ inline world::Terrain terrain_from(world::HeightField field,
   terrain.settings.cell_m = field.cell_m();
   terrain.height = std::move(field);
   const world::HeightField& h = terrain.height;
-  terrain.albedo = nav::Image<float>(h.nx(), h.ny());
+  terrain.albedo = imaging::Image<float>(h.nx(), h.ny());
   for (int j = 0; j < h.ny(); ++j)
     for (int i = 0; i < h.nx(); ++i)
       terrain.albedo(i, j) =
@@ -74,8 +74,8 @@ struct HandCamera {
   Eigen::Vector3d x_axis, y_axis, z_axis;
   double f, cx, cy;
 
-  HandCamera(const nav::RigParameters& p, nav::Eye eye) {
-    const double side = eye == nav::Eye::left ? 0.5 : -0.5;
+  HandCamera(const imaging::RigParameters& p, imaging::Eye eye) {
+    const double side = eye == imaging::Eye::left ? 0.5 : -0.5;
     centre = Eigen::Vector3d(p.mast_forward_m, side * p.baseline_m, p.mast_height_m);
     const double a = p.pitch_down_deg * std::numbers::pi / 180.0;
     x_axis = Eigen::Vector3d(0.0, -1.0, 0.0);

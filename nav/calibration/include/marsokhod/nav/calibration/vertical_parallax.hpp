@@ -1,0 +1,77 @@
+#pragma once
+
+#include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/work/work.hpp"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory_resource>
+#include <stdexcept>
+#include <string>
+
+namespace marsokhod::nav {
+
+/// A calibration file that cannot be read, or a map that does not fit the images.
+class CalibrationError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The vertical parallax of a stereo pair (paper, section 2): how many rows lower the right
+/// image shows what the left image shows at row y, as a smooth function of the position.
+/// The model is a quadratic in x and y measured from the image centre ((W-1)/2, (H-1)/2):
+///
+///   shift(x, y) = c0 + cx x + cy y + cxx x^2 + cxy x y + cyy y^2
+///
+/// which holds the first-order effect of every small turn of the right camera exactly
+/// (docs/camera.md: dy = tilt (f + y^2/f) - pan x y / f - roll x). A positive shift means the
+/// right image's content sits further down. Sizes are those of the images it was fitted on.
+struct VerticalParallaxMap {
+  int width = 0;
+  int height = 0;
+  /// c0, cx, cy, cxx, cxy, cyy (rows, rows per pixel, rows per pixel squared).
+  std::array<double, 6> coefficients{};
+
+  /// The shift at pixel (x, y) of the image (column, row; pixel centres at integers).
+  double shift_at(double x, double y) const;
+  /// The largest |shift| over the image (reached at a corner or the centre for a quadratic
+  /// without interior extremes; checked on a grid, so valid for any coefficients).
+  double largest_shift() const;
+  bool is_identity() const;
+};
+
+/// How remove_vertical_parallax reads between two rows.
+enum class VerticalInterpolation : std::uint8_t {
+  linear, ///< two rows: a half-row shift averages them, blurring the image vertically
+  cubic,  ///< four rows, Keys' cubic convolution: keeps the detail matching relies on
+};
+
+/// The right image with every pixel taken from `shift_at(x, y)` rows further down, so that the
+/// pair is row-aligned before matching; rows beyond the border repeat the border row. Reports
+/// Work::pyramid_pixel per output pixel: like a pyramid pixel it is a few loads and one
+/// integer weighted sum. Throws CalibrationError when the map's size differs from the image's.
+/// Instantiated for NullMeter, CountingMeter and DynamicMeter.
+template <class Meter = NullMeter>
+imaging::Image<std::uint8_t>
+remove_vertical_parallax(imaging::ImageView<const std::uint8_t> right, const VerticalParallaxMap& map,
+                         VerticalInterpolation interpolation = VerticalInterpolation::linear,
+                         Meter& meter = null_meter,
+                         std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+
+/// Largest |shift| a calibration file may hold, rows: beyond it rows no longer correspond.
+inline constexpr double kMaxVerticalShift = 64.0;
+
+/// Reads a calibration file (TOML, docs/navigation.md, "Calibration file"). Throws
+/// CalibrationError naming the file (and the line where there is one) and the problem.
+VerticalParallaxMap load_vertical_parallax(const std::filesystem::path& path);
+
+/// The calibration file text for a map; `comment` lines (may be empty) describe the fit.
+std::string vertical_parallax_to_toml(const VerticalParallaxMap& map,
+                                      const std::string& comment = {});
+
+/// Throws CalibrationError naming `source` when the map's size differs from width x height.
+void check_map_size(const VerticalParallaxMap& map, int width, int height,
+                    const std::string& source);
+
+} // namespace marsokhod::nav

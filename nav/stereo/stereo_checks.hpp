@@ -1,0 +1,18 @@
+#pragma once
+
+// Input checks of the stereo matcher (private).
+
+#include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/stereo/stereo.hpp"
+
+#include <cstdint>
+
+namespace marsokhod::nav::detail {
+
+/// Throws std::invalid_argument when the pair cannot be matched with these options: bad
+/// options, empty or multi-channel images, sizes that differ, a search range wider than the
+/// image, an image too small for the pyramid.
+void check_pair(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
+                const StereoOptions& options);
+
+} // namespace marsokhod::nav::detail

@@ -1,0 +1,49 @@
+#pragma once
+
+// Matching of one pyramid layer (private to the stereo matcher).
+
+#include "matching/band_layout.hpp"
+#include "stereo/coarse_guide.hpp"
+#include "features/layer_features.hpp"
+
+#include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/stereo/stereo.hpp"
+
+#include <cstdint>
+#include <memory_resource>
+#include <span>
+
+namespace marsokhod::nav::detail {
+
+/// One layer's images, features and search limits.
+struct LayerInput {
+  imaging::ImageView<const std::uint8_t> left;
+  const LayerFeatures* left_features = nullptr;
+  const LayerFeatures* right_features = nullptr;
+  DisparityLimits limits;
+  /// The coarser layer's result, or null at the top layer (full search, ground prior).
+  CoarseGuide* guide = nullptr;
+  /// Whether to run the left-right check; without it every pixel counts as reliable. The
+  /// coarse layers, whose disparities only seed the next layer's search, skip it, except the
+  /// top layer under the ground prior, which needs reliable disparities to bound the rows above.
+  bool check = true;
+  /// Per row, how many first columns show scene the right image cannot show: left out of the
+  /// right view (StereoOptions::unseen_columns; given at the original layer only); empty for
+  /// none.
+  std::span<const std::int16_t> unseen;
+};
+
+/// One layer's disparity (+inf where unreliable) and left-right validity.
+struct LayerOutput {
+  imaging::Image<float> disparity;
+  imaging::Image<std::uint8_t> valid;
+  std::uint64_t candidates = 0;
+  std::uint64_t valid_pixels = 0;
+};
+
+/// Matches every scan line of the layer: ranges, costs, dynamic programme, choice, check.
+template <class Meter>
+LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, Meter& meter,
+                        std::pmr::memory_resource* memory);
+
+} // namespace marsokhod::nav::detail

@@ -1,0 +1,56 @@
+#include "zones/zone_rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace marsokhod::nav::detail {
+namespace {
+
+constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
+constexpr auto kTraversable = static_cast<std::uint8_t>(Zone::traversable);
+
+// The ends of a gap are close on the ground and at about the same height.
+bool narrow_and_level(const TerrainPoints& terrain, const ZoneOptions& options, int y, int left,
+                      int right) {
+  const double gap = std::hypot(terrain.forward(right, y) - terrain.forward(left, y),
+                                terrain.left(right, y) - terrain.left(left, y));
+  const double rise = std::abs(terrain.elevation(right, y) - terrain.elevation(left, y));
+  return gap < options.bridged_gap_m && rise <= options.max_step_m;
+}
+
+// The verdict on the run [first, end) of held-back pixels of row y.
+std::uint8_t run_verdict(const TerrainPoints& terrain, const ZoneOptions& options,
+                         const std::uint8_t* row, int y, int first, int end, std::uint64_t& tests) {
+  const int width = terrain.width();
+  // The run's ends must be seen ground on both sides.
+  if (options.bridged_gap_m <= 0.0 || first == 0 || end == width ||
+      row[first - 1] != kTraversable || row[end] != kTraversable)
+    return kUnknown;
+  ++tests;
+  return narrow_and_level(terrain, options, y, first - 1, end) ? kTraversable : kUnknown;
+}
+
+} // namespace
+
+std::uint64_t bridge_small_gaps(const TerrainPoints& terrain, const ZoneOptions& options,
+                                imaging::Image<std::uint8_t>& zone) {
+  std::uint64_t tests = 0;
+  const int width = zone.width();
+  for (int y = 0; y < zone.height(); ++y) {
+    std::uint8_t* row = zone.row(y);
+    int x = 0;
+    // Held-back pixels are few: the library's byte search skips to the next one.
+    while (const void* hit =
+               std::memchr(row + x, kUnreliable, static_cast<std::size_t>(width - x))) {
+      const auto first = static_cast<int>(static_cast<const std::uint8_t*>(hit) - row);
+      x = first;
+      while (x < width && row[x] == kUnreliable)
+        ++x;
+      std::fill(row + first, row + x, run_verdict(terrain, options, row, y, first, x, tests));
+    }
+  }
+  return tests;
+}
+
+} // namespace marsokhod::nav::detail
