@@ -1,3 +1,5 @@
+// ALT and PRI ALT: the enable, wait and disable sequence and its data-book costs.
+
 #include "marsokhod/occam_port/alt.hpp"
 
 #include "marsokhod/emulator/node.hpp"

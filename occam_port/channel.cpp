@@ -1,3 +1,5 @@
+// Channel communication: the in/out rendezvous, its charges, and external channels on links.
+
 #include "marsokhod/occam_port/channel.hpp"
 
 #include "marsokhod/emulator/link.hpp"

@@ -1,3 +1,5 @@
+// The Commstime network (prefix, delta, successor, consumer) as compiled occam runs it.
+
 #include "marsokhod/occam_port/commstime.hpp"
 
 #include "marsokhod/occam_port/occam.hpp"
@@ -41,7 +43,7 @@ void charge(const Code& code) {
   code.kernel->consume(code.time);
 }
 
-void prefix(const Overheads& costs, std::int64_t total, Chan<int>& in, Chan<int>& out) {
+void prefix(const Overheads& costs, std::int64_t total, ChanIn<int> in, ChanOut<int> out) {
   out << 0;
   for (std::int64_t i = 1; i < total; ++i) {
     int x = 0;
@@ -53,13 +55,13 @@ void prefix(const Overheads& costs, std::int64_t total, Chan<int>& in, Chan<int>
   in >> last;
 }
 
-void delta(const Overheads& costs, std::int64_t total, bool parallel, Chan<int>& in,
-           Chan<int>& out1, Chan<int>& out2) {
+void delta(const Overheads& costs, std::int64_t total, bool parallel, ChanIn<int> in,
+           ChanOut<int> out1, ChanOut<int> out2) {
   for (std::int64_t i = 0; i < total; ++i) {
     int x = 0;
     in >> x;
     if (parallel) {
-      par([&] { out1 << x; }, [&] { out2 << x; });
+      par([out1, &x] { out1 << x; }, [out2, &x] { out2 << x; });
     } else {
       out1 << x;
       out2 << x;
@@ -68,7 +70,7 @@ void delta(const Overheads& costs, std::int64_t total, bool parallel, Chan<int>&
   }
 }
 
-void successor(const Overheads& costs, std::int64_t total, Chan<int>& in, Chan<int>& out) {
+void successor(const Overheads& costs, std::int64_t total, ChanIn<int> in, ChanOut<int> out) {
   for (std::int64_t i = 0; i < total; ++i) {
     int x = 0;
     in >> x;
@@ -78,7 +80,7 @@ void successor(const Overheads& costs, std::int64_t total, Chan<int>& in, Chan<i
   }
 }
 
-void consumer(const Overheads& costs, const CommstimeOptions& options, Chan<int>& in,
+void consumer(const Overheads& costs, const CommstimeOptions& options, ChanIn<int> in,
               CommstimeResult& result) {
   emulator::Kernel& kernel = emulator::Node::current().kernel();
   int x = 0;

@@ -1,3 +1,5 @@
+// compute(): charges the current process for a mix of instructions.
+
 #include "marsokhod/occam_port/compute.hpp"
 
 #include "marsokhod/emulator/node.hpp"

@@ -1,3 +1,5 @@
+// PAR, replicated PAR and PRI PAR: startp/endp and the join of started branches.
+
 #include "marsokhod/occam_port/par.hpp"
 
 #include "marsokhod/emulator/node.hpp"

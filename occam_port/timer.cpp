@@ -1,3 +1,5 @@
+// The occam TIMER: the wrapping clock of each priority, ldtimer and tin.
+
 #include "marsokhod/occam_port/timer.hpp"
 
 #include "marsokhod/emulator/node.hpp"

@@ -1,3 +1,5 @@
+// ALT and PRI ALT, index form, and TIMER: guard order, preconditions, SKIP and timeouts.
+
 #include "occam_port/occam_rig.hpp"
 
 #include "marsokhod/occam_port/occam.hpp"

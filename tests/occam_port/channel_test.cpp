@@ -1,3 +1,5 @@
+// Channels: rendezvous, data-book costs, order, deadlock reports and misuse.
+
 #include "occam_port/occam_rig.hpp"
 
 #include "marsokhod/occam_port/occam.hpp"

@@ -1,3 +1,5 @@
+// Commstime: each loop costs the sum of its processes' data-book instructions.
+
 #include "occam_port/occam_rig.hpp"
 
 #include "marsokhod/occam_port/commstime.hpp"

@@ -1,6 +1,5 @@
-#pragma once
-
 // A kernel and one T805-30 node from the shipped pc-card platform, for the occam layer tests.
+#pragma once
 
 #include "marsokhod/emulator/kernel.hpp"
 #include "marsokhod/emulator/node.hpp"

@@ -1,3 +1,5 @@
+// PAR and PRI PAR: startp/endp costs, joins, priorities and killing.
+
 #include "occam_port/occam_rig.hpp"
 
 #include "marsokhod/occam_port/occam.hpp"

@@ -1,6 +1,7 @@
-// Random ALT/PAR schedules checked against a reference model: every message sent on a
-// channel arrives exactly once and in order, every ALT takes a ready guard and no ready guard
-// listed before it, and every schedule ends without deadlock.
+// Random ALT/PAR schedules checked against a reference model.
+//
+// Every message sent on a channel arrives exactly once and in order, every ALT takes a ready
+// guard and no ready guard listed before it, and every schedule ends without deadlock.
 
 #include "occam_port/occam_rig.hpp"
 

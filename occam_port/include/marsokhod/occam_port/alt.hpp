@@ -1,3 +1,4 @@
+// ALT and PRI ALT, index form: guards and the transputer's enable/wait/disable sequence.
 #pragma once
 
 #include "marsokhod/emulator/kernel.hpp"
@@ -26,6 +27,11 @@ struct Guard {
 /// `c ? ...` as a guard; after the ALT selects it, perform the input yourself (`c >> x`).
 inline Guard input(ChanBase& channel) {
   return Guard{Guard::Kind::channel, true, &channel, 0};
+}
+/// `c ? ...` as a guard on an input end; perform the input on the same end (`in >> x`).
+template <typename T>
+Guard input(ChanIn<T> in) {
+  return input(static_cast<ChanBase&>(detail::EndAccess::channel(in)));
 }
 /// `tim ? AFTER t` as a guard.
 inline Guard after(const Timer&, std::int32_t t) {

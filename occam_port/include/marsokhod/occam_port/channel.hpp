@@ -1,7 +1,9 @@
+// Occam channels: the untyped ChanBase (internal or on a link) and the typed Chan<T>.
 #pragma once
 
 #include "marsokhod/emulator/cost_table.hpp"
 #include "marsokhod/emulator/kernel.hpp"
+#include "marsokhod/occam_port/chan_ends.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -152,7 +154,9 @@ std::size_t message_bytes(const T&) {
   return sizeof(T);
 }
 
-/// An occam channel carrying values of T: `c << x` is `c ! x`, `c >> x` is `c ? x`.
+/// An occam channel carrying values of T: `c << x` is `c ! x`, `c >> x` is `c ? x`. Hand a
+/// process only the end it uses: `c.in()` (a ChanIn<T>) or `c.out()` (a ChanOut<T>); both
+/// also convert implicitly from `Chan<T>&`.
 template <typename T>
 class Chan : public ChanBase {
   static_assert(std::is_copy_assignable_v<T>, "a channel copies its messages");
@@ -168,6 +172,11 @@ public:
     input(&value, message_bytes(value), copy);
     return *this;
   }
+
+  /// The input end: can only `>>` and be an ALT guard.
+  ChanIn<T> in() { return ChanIn<T>(*this); }
+  /// The output end: can only `<<`.
+  ChanOut<T> out() { return ChanOut<T>(*this); }
 
   /// Carries the channel over a link (see ChanBase); the bytes of T travel as they are.
   void place_on_link(emulator::LinkPort& output_port, emulator::LinkPort& input_port) {

@@ -1,3 +1,4 @@
+// The Commstime benchmark network and what one run of it measures.
 #pragma once
 
 #include "marsokhod/emulator/node.hpp"

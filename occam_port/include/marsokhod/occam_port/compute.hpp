@@ -1,3 +1,4 @@
+// compute(): charges the current process for executing instructions.
 #pragma once
 
 #include "marsokhod/emulator/cost_table.hpp"

@@ -1,3 +1,4 @@
+// PAR, replicated PAR and PRI PAR.
 #pragma once
 
 #include <cstddef>

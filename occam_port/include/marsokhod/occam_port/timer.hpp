@@ -1,3 +1,4 @@
+// The occam TIMER and AFTER comparison on the wrapping transputer clock.
 #pragma once
 
 #include "marsokhod/emulator/time.hpp"
