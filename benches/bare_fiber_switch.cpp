@@ -1,3 +1,4 @@
+// Benchmark floor: the bare Boost.Context fiber switch, timed in the emulator benchmarks' run.
 // The floor any process switch sits on, linked into every emulator benchmark so that it is
 // measured in the same run: two Boost.Context fibers handing control back and forth. The host's
 // speed drifts by a quarter within one run (a KVM guest); the ratio to this switch drifts less.

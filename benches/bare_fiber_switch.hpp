@@ -1,3 +1,4 @@
+// The bare Boost.Context fiber switch the emulator benchmarks measure themselves against.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// Benchmark: Commstime, the host cost of the emulator's channel communication hot path.
 // Host cost of the emulator's hot path: Commstime, four channel communications per loop, each
 // one a context switch between two simulated processes; the bare fiber switch it sits on is
 // measured in the same run (bare_fiber_switch.cpp).

@@ -1,3 +1,4 @@
+// Benchmark: host cost of switching between simulated processes, and their memory.
 // Host cost of switching between simulated processes, against a bare Boost.Context switch
 // (bare_fiber_switch.cpp), and the memory of many live processes.
 

@@ -1,3 +1,4 @@
+// Benchmark: host cost per emulated byte of the link model, framing alone and full streams.
 // Host cost of the link model: nanoseconds of host time per emulated byte, for the pure framing
 // state machine and for a full stream between two emulated nodes (kernel events, processes).
 

@@ -1,3 +1,4 @@
+// Benchmark: one navigation cycle's chain, stereo to drive commands, at 256 x 256.
 // The navigation chain of one cycle at the paper's 256 x 256: stereo, range and elevation,
 // prohibited zones, safest path and drive commands (target: at most 5 ms on one core), each
 // stage after stereo on its own, and the chain with a counting meter to show what metering

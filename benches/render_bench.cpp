@@ -1,3 +1,4 @@
+// Benchmark: the ray-casting stereo renderer and the build of its maximum mipmap.
 // Ray-casting stereo renderer: a pair with ground truth per frame, and the one-off build of the
 // maximum mipmap. The terrain (default settings, 48 m at 2 cm) is generated once, outside the
 // timed loops. Target: a 256 x 256 pair with ground truth in under 50 ms on one core.

@@ -1,3 +1,4 @@
+// Benchmark: stereo reconstruction speed against OpenCV and the navigation budget.
 // Stereo reconstruction speed. Targets (docs/navigation.md): tsukuba at least 3x faster than
 // OpenCV StereoSGBM measured in the same run (one thread), and a 256 x 256 rover pair fast
 // enough for the whole navigation chain to fit in 5 ms. The NullMeter figures must equal the

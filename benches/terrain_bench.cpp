@@ -1,3 +1,4 @@
+// Benchmark: generating, shading and querying the synthetic Mars site.
 // Cost of the synthetic Mars site: generation of the default 48 m x 48 m, 2 cm terrain, its
 // shading under a lighting, and the per-pixel queries the renderer makes.
 #include "marsokhod/world/terrain/terrain.hpp"

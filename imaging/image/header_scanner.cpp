@@ -1,3 +1,5 @@
+// The netpbm-style ASCII header scanner shared by the PNM and PFM codecs.
+
 #include "image/header_scanner.hpp"
 
 #include "image/image_codec.hpp"

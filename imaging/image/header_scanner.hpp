@@ -1,3 +1,4 @@
+// HeaderScanner, the netpbm-style header reader (private to the image room's codecs).
 #pragma once
 
 // Internal: reads the ASCII headers shared by PNM and PFM files.

@@ -1,3 +1,4 @@
+// DecodedImage and the per-format decode and encode functions (private to the image room).
 #pragma once
 
 // Internal interface between the image dispatcher (image_io.cpp) and the per-format codecs.

@@ -1,3 +1,5 @@
+// Image files: reading chosen by content, writing chosen by extension, grey conversion.
+
 #include "marsokhod/imaging/image/image_io.hpp"
 
 #include "image/image_codec.hpp"

@@ -1,3 +1,4 @@
+// The PFM codec: decoding and encoding float images the Middlebury way.
 // PFM as used by the Middlebury stereo benchmark: "Pf" (grey) or "PF" (RGB), width, height, a
 // scale whose sign gives the byte order (negative = little endian), then 32-bit floats with the
 // bottom row first.

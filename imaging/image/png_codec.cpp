@@ -1,3 +1,4 @@
+// The PNG codec: decoding and encoding 8- and 16-bit PNG files through libpng.
 // PNG through libpng. libpng reports errors by longjmp, so every call that may fail runs in a
 // small function holding only trivially destructible locals; owning C++ objects (the image,
 // the row table, the libpng structs' guard) live in the caller and are never jumped over.

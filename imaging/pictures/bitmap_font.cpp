@@ -1,3 +1,5 @@
+// The legends' bitmap font: glyph table, text width and text drawing.
+
 #include "pictures/bitmap_font.hpp"
 
 #include <algorithm>

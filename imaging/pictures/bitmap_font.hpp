@@ -1,3 +1,4 @@
+// Glyphs, text width and text drawing of the legend font (private to the pictures room).
 #pragma once
 
 // Internal: a tiny bitmap font for legends, so pictures need no font files at run time.

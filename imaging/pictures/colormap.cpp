@@ -1,3 +1,5 @@
+// False-colour pictures of scalar fields, with a legend of colour bar and tick labels.
+
 #include "marsokhod/imaging/pictures/colormap.hpp"
 
 #include "pictures/bitmap_font.hpp"

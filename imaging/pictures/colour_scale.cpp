@@ -1,3 +1,5 @@
+// The viridis colour scale and the legends' tick choice (private to false_colour).
+
 #include "pictures/colour_scale.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// Viridis and legend ticks (private to the pictures room's false_colour).
 #pragma once
 
 // Internal: the colour scale and tick choice behind false_colour's pictures and legends.

@@ -1,3 +1,5 @@
+// The pinhole stereo rig: parameter checks, camera poses, rays, projection, disparity.
+
 #include "marsokhod/imaging/rig/camera.hpp"
 
 #include "rig/rig_fields.hpp"

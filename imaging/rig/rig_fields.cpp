@@ -1,3 +1,5 @@
+// The rig description's keys and the values that make physical sense for each.
+
 #include "rig/rig_fields.hpp"
 
 #include "marsokhod/imaging/image/image.hpp"

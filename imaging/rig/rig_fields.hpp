@@ -1,3 +1,4 @@
+// The keys of a rig description and their allowed values (private to the rig room).
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"

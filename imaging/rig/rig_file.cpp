@@ -1,3 +1,5 @@
+// Rig files: reading a TOML rig description into a StereoRig, and writing one back.
+
 #include "rig/rig_fields.hpp"
 #include "marsokhod/imaging/rig/toml_document.hpp"
 

@@ -1,3 +1,5 @@
+// The horizon row, the ground distance at a row and an obstacle's parallax for a rig.
+
 #include "marsokhod/imaging/rig/rig_geometry.hpp"
 
 #include <cmath>

@@ -1,3 +1,5 @@
+// The vertical parallax map's shifts, and right images resampled to remove them.
+
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
 
 #include "work/work_report.hpp"

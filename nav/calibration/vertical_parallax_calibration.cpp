@@ -1,3 +1,5 @@
+// Vertical parallax calibration: block matches fitted by a robust least-squares quadratic.
+
 #include "marsokhod/nav/calibration/vertical_parallax_calibration.hpp"
 
 #include "calibration/vertical_parallax_search.hpp"

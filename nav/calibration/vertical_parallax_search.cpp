@@ -1,3 +1,5 @@
+// Block matching in both directions for the vertical parallax calibration (private).
+
 #include "calibration/vertical_parallax_search.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Block matching for the vertical parallax calibration (private to the calibration room).
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

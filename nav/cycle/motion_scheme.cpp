@@ -1,3 +1,5 @@
+// The motion scheme's transitions: planning, driving, escape turns and remote control.
+
 #include "marsokhod/nav/cycle/motion_scheme.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// One navigation cycle: stereo, range and elevation, zones, safest path and drive commands.
+
 #include "marsokhod/nav/cycle/navigation.hpp"
 
 #include "terrain/terrain_view.hpp"

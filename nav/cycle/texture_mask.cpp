@@ -1,3 +1,5 @@
+// The navigation cycle's texture mask: pixels whose 5 x 5 neighbourhood is not featureless.
+
 #include "marsokhod/nav/cycle/navigation.hpp"
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// Brightness features: census and rank transforms of every pixel of an image.
+
 #include "marsokhod/nav/features/brightness_features.hpp"
 
 #include "lanes/bit_count.hpp"

@@ -1,3 +1,5 @@
+// The 3x3 census transform of one image row, sixteen pixels at a time (private).
+
 #include "features/census_rows.hpp"
 
 #include <bit>

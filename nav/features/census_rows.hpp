@@ -1,3 +1,4 @@
+// The 3x3 census transform of one image row (private to the features and the matcher).
 #pragma once
 
 // The 3x3 census transform of one image row (private): shared by brightness_features() and

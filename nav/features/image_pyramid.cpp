@@ -1,3 +1,5 @@
+// The image pyramid's next layer: an image halved by 2x2 means.
+
 #include "marsokhod/nav/features/image_pyramid.hpp"
 
 #include "work/work_report.hpp"

@@ -1,3 +1,5 @@
+// A pyramid layer's brightness features in the matcher's storage (private).
+
 #include "features/layer_features.hpp"
 
 #include "features/census_rows.hpp"

@@ -1,3 +1,4 @@
+// LayerFeatures: compact per-layer features for the stereo matcher (private to features).
 #pragma once
 
 // A pyramid layer's brightness features as the stereo matcher reads them (private).

@@ -1,3 +1,4 @@
+// Bit counts that vectorise without -mpopcnt (private SIMD lane helpers of nav).
 #pragma once
 
 // Bit counts written out, because without a -mpopcnt build std::popcount becomes a library

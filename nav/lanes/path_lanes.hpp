@@ -1,3 +1,4 @@
+// Two-lane double arithmetic for terrain and path kernels (private SIMD lane helpers).
 #pragma once
 
 // Two double lanes for the per-pixel arithmetic after the stereo (private): the terrain points

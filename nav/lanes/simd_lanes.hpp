@@ -1,3 +1,4 @@
+// Fixed-width SIMD lanes for the stereo matcher's inner loops (private lane helpers).
 #pragma once
 
 // Fixed-width lanes for the inner loops of the stereo matcher (private). GCC and Clang vector

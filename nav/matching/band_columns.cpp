@@ -1,3 +1,5 @@
+// Transposing a band's feature columns for the matching cost kernels (private).
+
 #include "matching/band_columns.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// A band's feature columns, transposed for the cost kernels (private to the stereo matcher).
 #pragma once
 
 // The feature columns of a band of scan lines, transposed for the cost kernels (private to the

@@ -1,3 +1,5 @@
+// The scan-line dynamic programme on a band of eight lines in vector lanes (private).
+
 #include "matching/band_dp.hpp"
 
 #include "matching/matching_cost.hpp"

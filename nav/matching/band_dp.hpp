@@ -1,3 +1,4 @@
+// BandDp and BandChoice: a band's forward and backward passes and its choices (private).
 #pragma once
 
 // The scan-line dynamic programme on a band of lines at once (private to the stereo matcher).

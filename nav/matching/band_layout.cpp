@@ -1,3 +1,5 @@
+// Laying out a band's tiles and their disparity windows (private to the stereo matcher).
+
 #include "matching/band_layout.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// BandLayout: the tiles and disparity windows of a band of scan lines (private to matching).
 #pragma once
 
 // How the matcher lays out the candidates of a band of scan lines (private).

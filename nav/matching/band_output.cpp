@@ -1,3 +1,5 @@
+// A band's disparities checked left against right and written into the layer (private).
+
 #include "matching/band_output.hpp"
 
 #include "matching/consistency_lines.hpp"

@@ -1,3 +1,4 @@
+// A band's choices written back into the layer's rows (private to the stereo matcher).
 #pragma once
 
 // A band's choices written back into the layer's rows (private to the stereo matcher): the band

@@ -1,3 +1,4 @@
+// The left-right check on strided lines (private to the matching and stereo rooms).
 #pragma once
 
 // The left-right check on strided lines (private): the public functions of

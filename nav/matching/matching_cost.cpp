@@ -1,3 +1,5 @@
+// Matching costs of a band: window sums of feature distances, per feature kind (private).
+
 #include "matching/matching_cost.hpp"
 
 #include "lanes/simd_lanes.hpp"

@@ -1,3 +1,4 @@
+// MatchingCost: a band's 3x3 window costs at each disparity (private to the stereo matcher).
 #pragma once
 
 // Matching costs of a band of scan lines (private to the stereo matcher).

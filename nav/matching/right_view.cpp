@@ -1,3 +1,5 @@
+// The right view's disparities of a band from its aggregated costs (private).
+
 #include "matching/right_view.hpp"
 
 #include "lanes/simd_lanes.hpp"

@@ -1,3 +1,4 @@
+// The right image's disparities from the left view's costs (private to the stereo matcher).
 #pragma once
 
 // The right image's disparities from the left view's aggregated costs (private to the stereo

@@ -1,3 +1,5 @@
+// The scan-line dynamic programme on one line, run through the band kernel in every lane.
+
 #include "marsokhod/nav/matching/scanline_dp.hpp"
 
 #include "matching/band_dp.hpp"

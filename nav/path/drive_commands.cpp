@@ -1,3 +1,5 @@
+// Drive commands: the safest path's ground polyline simplified into turn-and-drive legs.
+
 #include "marsokhod/nav/path/drive_commands.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// The safest path: start and destination choice, row sweep and path rebuilt back to start.
+
 #include "marsokhod/nav/path/path_planner.hpp"
 
 #include "work/work_report.hpp"

@@ -1,3 +1,5 @@
+// Simplifying a ground polyline to the vertices that the drive commands turn at.
+
 #include "marsokhod/nav/path/drive_commands.hpp"
 
 #include <algorithm>

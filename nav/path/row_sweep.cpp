@@ -1,3 +1,5 @@
+// The planner's row sweep: cheapest costs row by row over the pixel graph, two lanes at once.
+
 #include "lanes/path_lanes.hpp"
 #include "work/work_report.hpp"
 

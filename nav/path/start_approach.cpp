@@ -1,3 +1,5 @@
+// The pixels nearest the line from the rover centre to the start of its path.
+
 #include "marsokhod/nav/path/start_approach.hpp"
 
 #include <cmath>

@@ -1,3 +1,5 @@
+// The coarser layer's disparities turned into the finer layer's search windows (private).
+
 #include "stereo/coarse_guide.hpp"
 
 #include "matching/band_layout.hpp"

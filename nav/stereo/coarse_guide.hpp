@@ -1,3 +1,4 @@
+// Search windows from the coarser layer's disparities (private to the stereo matcher).
 #pragma once
 
 // The coarser layer's disparities as the search windows of the next finer layer (private to

@@ -1,3 +1,5 @@
+// The left-right check and the right view of one scan line.
+
 #include "marsokhod/nav/stereo/consistency_check.hpp"
 
 #include "matching/band_layout.hpp"

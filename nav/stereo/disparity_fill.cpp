@@ -1,3 +1,5 @@
+// Filling the pixels the left-right check rejected, and the 3x3 median of disparities.
+
 #include "marsokhod/nav/stereo/disparity_fill.hpp"
 
 #include "lanes/simd_lanes.hpp"

@@ -1,3 +1,5 @@
+// The Middlebury "bad pixels" score of a disparity estimate against ground truth.
+
 #include "marsokhod/nav/stereo/disparity_metrics.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// check_pair: the stereo matcher's refusal of pairs it cannot match (private to stereo).
 #pragma once
 
 // Input checks of the stereo matcher (private).

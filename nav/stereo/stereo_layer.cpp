@@ -1,3 +1,5 @@
+// Matching one pyramid layer band by band: costs, dynamic programme, left-right check.
+
 #include "stereo/stereo_layer.hpp"
 
 #include "matching/band_dp.hpp"

@@ -1,3 +1,4 @@
+// match_layer: one pyramid layer's input, output and matching (private to the stereo room).
 #pragma once
 
 // Matching of one pyramid layer (private to the stereo matcher).

@@ -1,3 +1,5 @@
+// The stereo matcher: a pyramid of layers matched coarse to fine, then filled.
+
 #include "matching/band_layout.hpp"
 #include "stereo/coarse_guide.hpp"
 #include "features/layer_features.hpp"

@@ -1,3 +1,5 @@
+// Stereo options: their validation, the automatic pyramid depth and the input checks.
+
 #include "stereo/stereo_checks.hpp"
 
 #include "marsokhod/nav/stereo/stereo.hpp"

@@ -1,3 +1,5 @@
+// Range and elevation: the level-frame point of every pixel from its disparity and the rig.
+
 #include "marsokhod/nav/terrain/elevation.hpp"
 
 #include "lanes/path_lanes.hpp"

@@ -1,3 +1,4 @@
+// The rounding test behind two-lane ground distances (private to the terrain room).
 #pragma once
 
 // Which lanes of a terrain point's ground distance need no std::hypot (private; elevation.cpp).

@@ -1,3 +1,5 @@
+// The level ground's disparity per pixel, and which pixels the right camera can see.
+
 #include "terrain/terrain_view.hpp"
 
 #include <algorithm>

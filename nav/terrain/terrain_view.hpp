@@ -1,3 +1,4 @@
+// Which pixels of a row the right camera sees the ground of (private to the navigation cycle).
 #pragma once
 
 // Which pixels of a row the right camera can see the level ground of (private; navigate()'s

@@ -1,3 +1,5 @@
+// Work metering: the names of the work kinds and a counting meter's total.
+
 #include "marsokhod/nav/work/work.hpp"
 
 #include <numeric>

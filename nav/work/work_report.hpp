@@ -1,3 +1,4 @@
+// How nav kernels report their work counts to a meter (private to the nav layer).
 #pragma once
 
 // How nav kernels hand their work counts to a meter. Defining MARSOKHOD_NAV_UNMETERED removes

@@ -1,3 +1,5 @@
+// Binning the visible terrain points into the ground grid the zone rules measure on.
+
 #include "zones/ground_grid.hpp"
 
 #include "lanes/simd_lanes.hpp"

@@ -1,3 +1,4 @@
+// The ground grid of visible points (private to the zone rules).
 #pragma once
 
 // The visible points binned into a square grid on the level ground plane (no interpolation:

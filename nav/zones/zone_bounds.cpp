@@ -1,3 +1,5 @@
+// Which pixels the ground grid bins, and the bounds of their points (private to the zones).
+
 #include "zones/zone_bounds.hpp"
 
 #include "marsokhod/nav/zones/zones.hpp"

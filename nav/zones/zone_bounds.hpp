@@ -1,3 +1,4 @@
+// The pixels the ground grid bins and their bounds (private to the zones' ground grid).
 #pragma once
 
 // Which pixels the ground grid bins, and how far their points reach (private to

@@ -1,3 +1,4 @@
+// Uninitialised scratch arrays for the zone stages (private to the zones room).
 #pragma once
 
 // Scratch arrays for the zone stages (private), taken from the caller's memory resource and

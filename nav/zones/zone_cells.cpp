@@ -1,3 +1,5 @@
+// Zone rule: a verdict written onto the traversable pixels of flagged ground-grid cells.
+
 #include "zones/zone_rules.hpp"
 
 namespace marsokhod::nav::detail {

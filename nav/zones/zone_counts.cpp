@@ -1,3 +1,5 @@
+// Zone counts: how many pixels of a zone map fall into each zone, sixteen at a time.
+
 #include "zones/zone_rules.hpp"
 
 #include <bit>

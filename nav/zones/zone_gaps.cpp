@@ -1,3 +1,5 @@
+// Zone rule: short, level gaps of unreliable pixels along a row bridged as traversable.
+
 #include "zones/zone_rules.hpp"
 
 #include <algorithm>

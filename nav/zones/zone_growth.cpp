@@ -1,3 +1,5 @@
+// Zone rule: the rover's half-width of margin grown around steps and slopes.
+
 #include "zones/zone_rules.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The ground grid's cells along one axis (private to the zones' ground grid).
 #pragma once
 
 // The ground grid's cells along one axis (private to ground_grid.cpp), for one point or, with

@@ -1,3 +1,5 @@
+// Zone rule: pixels whose ground distance breaks their column's order are marked unknown.
+
 #include "zones/zone_buffer.hpp"
 #include "zones/zone_rules.hpp"
 

@@ -1,3 +1,4 @@
+// The stages of the prohibited-zone search (private to the zones room).
 #pragma once
 
 // The stages of find_zones (zones.hpp), each returning the comparisons it made so that the

@@ -1,3 +1,5 @@
+// Zone rule: cells of the ground grid steeper than the slope limit.
+
 #include "zones/zone_rules.hpp"
 
 #include <cmath>

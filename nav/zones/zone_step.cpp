@@ -1,3 +1,5 @@
+// Zone rule: cells of the ground grid with a step over the limit within the step baseline.
+
 #include "zones/zone_rules.hpp"
 
 #include <algorithm>

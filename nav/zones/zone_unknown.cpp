@@ -1,3 +1,5 @@
+// Zone rule: unseen, out-of-range and unreliable pixels marked before the other rules.
+
 #include "zones/zone_rules.hpp"
 
 #include <cmath>

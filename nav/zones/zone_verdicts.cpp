@@ -1,3 +1,5 @@
+// Zone rule: every pixel's verdict from its ground-grid cell, in one pass.
+
 #include "zones/zone_rules.hpp"
 
 namespace marsokhod::nav::detail {

@@ -1,3 +1,5 @@
+// Prohibited zones: option checks, find_zones running the rules in order, and add_margin.
+
 #include "marsokhod/nav/zones/zones.hpp"
 
 #include "work/work_report.hpp"

@@ -1,3 +1,4 @@
+// Fuzz target: the image decoders must give a well-formed image or an ImageError.
 // libFuzzer target for the image decoders: any input must give a well-formed image or an
 // ImageError; anything else (a crash, a sanitizer report, another exception) is a finding.
 

@@ -1,3 +1,4 @@
+// Test support for the imaging tests: hand-written bytes, temporary folders, error checks.
 #pragma once
 
 // Helpers shared by the image tests: byte buffers written by hand, temporary folders and

@@ -1,3 +1,4 @@
+// Test support for the nav tests: random numbers that are the same on every library.
 #pragma once
 
 // Random numbers that are the same on every standard library: std::mt19937_64's sequence is

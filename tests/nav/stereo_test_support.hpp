@@ -1,3 +1,4 @@
+// Test support for the stereo tests: random-dot stereograms with known disparity.
 #pragma once
 
 // Synthetic stereo pairs with exactly known disparity for the stereo tests: random-dot

@@ -1,3 +1,4 @@
+// Test support for the zone and planner tests: hand-made, map-like terrain.
 #pragma once
 
 // Hand-made terrain for the zone and planner tests: a map-like view in which pixel (x, y)

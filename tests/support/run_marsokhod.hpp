@@ -1,3 +1,4 @@
+// Test support: running the built marsokhod binary and capturing its output and exit code.
 #pragma once
 
 #include <array>

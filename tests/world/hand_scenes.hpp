@@ -1,3 +1,4 @@
+// Test support for the world tests: hand-made scenes and a hand-written pinhole camera.
 #pragma once
 // Hand-made scenes and a hand-written pinhole camera for the renderer tests. The camera model is
 // written out from the rig's documented conventions (level frame x forward, y left, z up;

@@ -1,3 +1,5 @@
+// The lighting presets (high sun, overexposed, dark and wet, low sun) and their names.
+
 #include "marsokhod/world/lighting/lighting.hpp"
 
 #include <array>

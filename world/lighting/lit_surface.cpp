@@ -1,3 +1,5 @@
+// The lit surface: Lambertian shading and cast shadows of the terrain under a lighting.
+
 #include "marsokhod/world/lighting/lit_surface.hpp"
 
 #include "marsokhod/world/terrain/seeded_random.hpp"

@@ -1,3 +1,5 @@
+// One rig camera placed in the world: its pose, projection and image bounds.
+
 #include "marsokhod/world/render/camera_view.hpp"
 
 namespace marsokhod::world {

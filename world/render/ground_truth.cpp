@@ -1,3 +1,5 @@
+// Ground truth: the per-pixel recorder (hit, occlusion, obstacle) and the pixel-count summary.
+
 #include "marsokhod/world/render/ground_truth.hpp"
 
 #include "render/ground_truth_recorder.hpp"

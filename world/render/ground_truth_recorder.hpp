@@ -1,3 +1,4 @@
+// Filling the ground truth pixel by pixel from the left rays' hits (private to the renderer).
 #pragma once
 
 #include "marsokhod/world/render/camera_view.hpp"

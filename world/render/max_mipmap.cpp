@@ -1,3 +1,5 @@
+// The maximum mipmap: building its levels and casting rays through them to the terrain.
+
 #include "marsokhod/world/render/max_mipmap.hpp"
 
 #include "render/mipmap_walk.hpp"

@@ -1,3 +1,4 @@
+// A ray's walk down the maximum mipmap's blocks (private to max_mipmap.cpp).
 #pragma once
 
 #include "terrain/bilinear_cell.hpp"

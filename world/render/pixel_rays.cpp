@@ -1,3 +1,5 @@
+// Casting a camera's pixel-centre rays row by row, each walk started where it may safely be.
+
 #include "render/pixel_rays.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// The pixel-centre ray caster of a camera, row by row (private to the renderer).
 #pragma once
 
 #include "marsokhod/world/render/camera_view.hpp"

@@ -1,3 +1,5 @@
+// The ray-casting stereo renderer: shading, supersampling and noise for both eyes.
+
 #include "marsokhod/world/render/renderer.hpp"
 
 #include "render/ground_truth_recorder.hpp"

@@ -1,3 +1,5 @@
+// Camera sensor noise: the polar Box-Muller transform over std::mt19937_64's raw output.
+
 #include "marsokhod/world/render/sensor_noise.hpp"
 
 #include <cmath>

@@ -1,3 +1,5 @@
+// The exposed radiance a camera ray samples, with the fine texture filtered by footprint.
+
 #include "render/surface_sampler.hpp"
 
 #include <algorithm>

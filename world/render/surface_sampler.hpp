@@ -1,3 +1,4 @@
+// The radiance a camera ray samples from the lit surface (private to the renderer).
 #pragma once
 
 #include "marsokhod/world/terrain/terrain.hpp"

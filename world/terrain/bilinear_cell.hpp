@@ -1,3 +1,4 @@
+// One bilinear cell of the height field and where a ray meets it (private to ray casting).
 #pragma once
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// Craters and pits: sampling their sizes and places, and carving them into the heights.
+
 #include "marsokhod/world/terrain/craters.hpp"
 
 #include "marsokhod/world/terrain/seeded_random.hpp"

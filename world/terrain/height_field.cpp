@@ -1,3 +1,5 @@
+// The height field's grid, and the nodes around a point within a reach.
+
 #include "marsokhod/world/terrain/height_field.hpp"
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// The obstacle map: steps and slopes over the locomotion limits' baselines, by sliding extremes.
+
 #include "marsokhod/world/terrain/obstacle_map.hpp"
 
 #include <algorithm>

@@ -1,3 +1,5 @@
+// The bare regolith: undulation, regional slope and roughness of the heights, and albedo.
+
 #include "marsokhod/world/terrain/regolith.hpp"
 
 #include "marsokhod/world/terrain/regolith_noise.hpp"

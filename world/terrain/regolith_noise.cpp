@@ -1,3 +1,5 @@
+// Value noise on grid images: Catmull-Rom lattice noise, fractal sums and white noise.
+
 #include "marsokhod/world/terrain/regolith_noise.hpp"
 
 #include <array>

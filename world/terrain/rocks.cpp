@@ -1,3 +1,5 @@
+// Rocks: sizes drawn from the abundance model, shapes, and placement into heights and albedo.
+
 #include "marsokhod/world/terrain/rocks.hpp"
 
 #include "marsokhod/world/terrain/regolith_noise.hpp"

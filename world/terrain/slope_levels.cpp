@@ -1,3 +1,5 @@
+// Slope bounds of the bilinear surface, for the grid and per quadtree block (private).
+
 #include "terrain/slope_levels.hpp"
 
 #include <algorithm>

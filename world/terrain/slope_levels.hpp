@@ -1,3 +1,4 @@
+// Slope bounds of the terrain per quadtree block (private to the renderer's ray casting).
 #pragma once
 
 #include "marsokhod/world/terrain/height_field.hpp"

@@ -1,3 +1,5 @@
+// The terrain generator: settings checked, then regolith, craters, rocks and obstacles.
+
 #include "marsokhod/world/terrain/craters.hpp"
 #include "marsokhod/world/terrain/regolith.hpp"
 #include "marsokhod/world/terrain/rocks.hpp"

@@ -1,3 +1,4 @@
+// Tests: the image decoders on seeded random damage to valid files of every format.
 // Seeded random damage to valid files of every format: decode_image must either return a
 // well-formed image or throw ImageError, whatever the damage.
 

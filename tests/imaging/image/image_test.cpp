@@ -1,3 +1,5 @@
+// Tests: Image<T> and ImageView<T> layout, sub-views, limits and memory resources.
+
 #include "marsokhod/imaging/image/image.hpp"
 
 #include <gtest/gtest.h>

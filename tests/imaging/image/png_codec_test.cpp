@@ -1,3 +1,4 @@
+// Tests: the PNG codec's decoding and refusals, on files assembled chunk by chunk.
 // PNG decoding against files assembled here chunk by chunk with zlib (PNG specification,
 // ISO/IEC 15948), so the expected pixels do not depend on any PNG writer.
 

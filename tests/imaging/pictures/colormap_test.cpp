@@ -1,3 +1,5 @@
+// Tests: false colour pictures, their legends, the tick choice and the bitmap font.
+
 #include "marsokhod/imaging/pictures/colormap.hpp"
 
 // White-box checks of the legend's parts, which the public function does not expose.

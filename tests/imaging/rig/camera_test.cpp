@@ -1,3 +1,5 @@
+// Tests: the stereo rig's geometry against the paper's figures and hand calculations.
+
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/rig/rig_geometry.hpp"
 

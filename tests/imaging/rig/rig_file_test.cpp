@@ -1,3 +1,5 @@
+// Tests: rig files: the shipped rigs, round trips through TOML, and errors naming the line.
+
 #include "marsokhod/imaging/rig/camera.hpp"
 
 #include <gtest/gtest.h>

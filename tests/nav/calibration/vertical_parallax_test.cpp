@@ -1,3 +1,5 @@
+// Tests: the vertical parallax map, its removal, its calibration file and its calibration.
+
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax_calibration.hpp"
 #include "marsokhod/nav/work/work.hpp"

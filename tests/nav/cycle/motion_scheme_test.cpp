@@ -1,3 +1,5 @@
+// Tests: the motion scheme's transitions, turn steps and configuration checks.
+
 #include "marsokhod/nav/cycle/motion_scheme.hpp"
 
 #include <gtest/gtest.h>

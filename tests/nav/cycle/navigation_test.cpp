@@ -1,3 +1,5 @@
+// Tests: one navigation cycle end to end, the texture mask and the rover's disparity range.
+
 #include "marsokhod/nav/cycle/navigation.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Tests: brightness features (census, rank) and the image pyramid's halving.
 // Brightness features: unchanged by gain and offset differences between the cameras, and the
 // census bits as defined (worked out by hand on small patches).
 #include "marsokhod/nav/features/brightness_features.hpp"

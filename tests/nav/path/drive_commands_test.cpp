@@ -1,3 +1,5 @@
+// Tests: polyline simplification and drive commands, by hand and from the paper's figure 4.
+
 #include "marsokhod/nav/path/drive_commands.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// Tests: the safest path planner against Dijkstra and on hand-made terrain.
+
 #include "nav/portable_random.hpp"
 #include "nav/terrain_grid.hpp"
 

@@ -1,3 +1,5 @@
+// Tests: the two-lane row sweep against a plain one-edge-at-a-time sweep, bit for bit.
+
 #include "nav/portable_random.hpp"
 #include "nav/terrain_grid.hpp"
 

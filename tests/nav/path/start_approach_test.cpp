@@ -1,3 +1,5 @@
+// Tests: the pixels the rover crosses on its way to the start of a path.
+
 #include "nav/terrain_grid.hpp"
 
 #include "marsokhod/nav/path/start_approach.hpp"

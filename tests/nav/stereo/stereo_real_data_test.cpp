@@ -1,3 +1,4 @@
+// Tests: the stereo matcher's acceptance figures on the real pairs of the shared data.
 // The acceptance figures on the real pairs of MARSOKHOD_SHARED_DATA/stereo: bad-1.0 below
 // OpenCV StereoBM on every pair and a mean no higher than StereoSGBM's. The peer figures and
 // the ground-truth scales are those of the data's README (measured outside this project).

@@ -1,3 +1,4 @@
+// Tests: the stereo matcher's work metering, memory resources and input refusals.
 // What the matcher reports and takes: the work counted by a meter follows the work done, every
 // buffer comes from the caller's memory resource, and bad input is refused clearly.
 #include "nav/stereo_test_support.hpp"

@@ -1,3 +1,5 @@
+// Tests: range and elevation from disparity, with the rover pitched, rolled and level.
+
 #include "marsokhod/nav/terrain/elevation.hpp"
 
 #include <gtest/gtest.h>

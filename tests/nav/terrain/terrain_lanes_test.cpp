@@ -1,3 +1,5 @@
+// Tests: the two-lane terrain conversion against the plain per-pixel expression, bit for bit.
+
 #include "terrain/terrain_rounding.hpp"
 
 #include "marsokhod/nav/terrain/elevation.hpp"

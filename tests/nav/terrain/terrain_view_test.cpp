@@ -1,3 +1,5 @@
+// Tests: the level-ground view: seeable pixels, columns past the edge, ground disparity.
+
 #include "terrain/terrain_view.hpp"
 #include "nav/portable_random.hpp"
 

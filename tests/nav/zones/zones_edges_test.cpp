@@ -1,3 +1,5 @@
+// Tests: edge cases of the prohibited zones: exact range limits, masks, held-back pixels.
+
 #include "nav/terrain_grid.hpp"
 
 #include "marsokhod/nav/zones/zones.hpp"

@@ -1,3 +1,5 @@
+// Tests: the prohibited zones (steps, slopes, margins, unknown ground) on hand-made terrain.
+
 #include "nav/terrain_grid.hpp"
 
 #include "marsokhod/nav/zones/zones.hpp"

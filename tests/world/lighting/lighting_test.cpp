@@ -1,3 +1,5 @@
+// Tests: the lighting presets and the lit surface's shading and cast shadows.
+
 #include "marsokhod/world/lighting/lighting.hpp"
 #include "marsokhod/world/lighting/lit_surface.hpp"
 #include "marsokhod/world/terrain/terrain.hpp"

@@ -1,3 +1,5 @@
+// Tests: the renderer's ground truth against analytic planes and boxes, and its summary.
+
 #include "world/hand_scenes.hpp"
 
 #include "marsokhod/world/render/ground_truth.hpp"

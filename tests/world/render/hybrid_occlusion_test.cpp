@@ -1,3 +1,4 @@
+// Tests: the hybrid occlusion mask against an occlusion ray cast for every pixel.
 // The occlusion mask decided from the right view's depths, with rays only where those are
 // ambiguous, against the reference that casts an occlusion ray for every pixel.
 #include "marsokhod/imaging/rig/camera.hpp"

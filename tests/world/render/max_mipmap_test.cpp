@@ -1,3 +1,5 @@
+// Tests: the maximum mipmap's levels, ray hits and slope bounds against dense marches.
+
 #include "world/hand_scenes.hpp"
 
 #include "marsokhod/world/render/max_mipmap.hpp"

@@ -1,3 +1,5 @@
+// Tests: the stereo renderer's rays, grey levels, noise, supersampling and misalignment.
+
 #include "world/hand_scenes.hpp"
 
 #include "marsokhod/world/render/camera_view.hpp"

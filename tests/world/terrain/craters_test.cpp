@@ -1,3 +1,5 @@
+// Tests: crater sizes follow the power law, and crater relief has floor, rim and ejecta.
+
 #include "marsokhod/world/terrain/craters.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// Tests: the height field's grid, bilinear heights, normals and border clamping.
+
 #include "marsokhod/world/terrain/height_field.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// Tests: the ground truth's obstacle map on flat ground, boxes and ramps, against node rules.
+
 #include "marsokhod/world/terrain/obstacle_map.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// Tests: rock sizes follow the Golombek-Rapp model, and rock footprints fit their diameters.
+
 #include "marsokhod/world/terrain/rocks.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// Tests: the terrain generator's determinism, grid, rock cover, craters, slope and albedo.
+
 #include "marsokhod/world/terrain/terrain.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// Image<T> and ImageView<T>: owning and non-owning interleaved pixel grids.
 #pragma once
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Image files: reading and writing PGM/PPM, PNG and PFM, and ImageError for bad ones.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

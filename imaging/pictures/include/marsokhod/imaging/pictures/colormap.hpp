@@ -1,3 +1,4 @@
+// False colour: a scalar field as an RGB picture with a legend, for people to read.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

@@ -1,3 +1,4 @@
+// The pinhole stereo rig on the rover mast: parameters, misalignment, attitude, frames.
 #pragma once
 
 #include <Eigen/Geometry>

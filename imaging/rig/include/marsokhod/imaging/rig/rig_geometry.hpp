@@ -1,3 +1,4 @@
+// What the rig sees of level ground: horizon row, ground distance, obstacle parallax.
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"

@@ -1,3 +1,4 @@
+// A project TOML file (rig, calibration) being read, with errors naming file and line.
 #pragma once
 
 #include <fmt/format.h>

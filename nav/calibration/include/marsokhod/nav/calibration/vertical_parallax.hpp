@@ -1,3 +1,4 @@
+// The vertical parallax map: its quadratic model, its file, and its removal from right images.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

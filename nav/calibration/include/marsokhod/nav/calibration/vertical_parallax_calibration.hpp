@@ -1,3 +1,4 @@
+// Vertical parallax calibration: the parallax map fitted to block matches of one stereo pair.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

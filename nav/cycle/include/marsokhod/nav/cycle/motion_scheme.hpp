@@ -1,3 +1,4 @@
+// The paper's motion scheme: states, events and the rover's next step between cycles.
 #pragma once
 
 #include <string_view>

@@ -1,3 +1,4 @@
+// One navigation cycle: from a stereo pair and the rig to zones, a safe path and drive commands.
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"

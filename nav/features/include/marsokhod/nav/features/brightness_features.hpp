@@ -1,3 +1,4 @@
+// Brightness features stable under gain and offset: census and rank transforms.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

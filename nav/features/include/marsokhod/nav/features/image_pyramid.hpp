@@ -1,3 +1,4 @@
+// The image pyramid: halving an image into the next, coarser layer.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

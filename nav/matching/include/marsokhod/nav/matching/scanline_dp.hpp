@@ -1,3 +1,4 @@
+// The scan-line dynamic programme over one line of matching costs, and its penalties.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// Drive commands: turn-then-drive legs from a path, and the polyline simplification.
 #pragma once
 
 #include "marsokhod/nav/terrain/elevation.hpp"

@@ -1,3 +1,4 @@
+// The safest path: planner options, the row sweep over the pixel graph and plan_path.
 #pragma once
 
 #include "marsokhod/nav/terrain/elevation.hpp"

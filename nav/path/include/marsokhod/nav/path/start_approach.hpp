@@ -1,3 +1,4 @@
+// The pixels the rover crosses from where it stands to the start of its path.
 #pragma once
 
 #include "marsokhod/nav/terrain/elevation.hpp"

@@ -1,3 +1,4 @@
+// The left-right consistency check of one scan line, and the right view it needs.
 #pragma once
 
 #include "marsokhod/nav/work/work.hpp"

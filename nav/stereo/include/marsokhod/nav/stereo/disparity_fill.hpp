@@ -1,3 +1,4 @@
+// What becomes of unreliable disparities: fill policies and the 3x3 median filter.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

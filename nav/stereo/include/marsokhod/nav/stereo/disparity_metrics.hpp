@@ -1,3 +1,4 @@
+// Scoring disparity maps: the Middlebury "bad" metric against ground truth.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

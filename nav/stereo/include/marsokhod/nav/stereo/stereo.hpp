@@ -1,3 +1,4 @@
+// The stereo matcher: options, result and match_stereo across the pyramid layers.
 #pragma once
 
 #include "marsokhod/nav/features/brightness_features.hpp"

@@ -1,3 +1,4 @@
+// Range and elevation: the visible terrain's level-frame points from a disparity map.
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"

@@ -1,3 +1,4 @@
+// Work metering: the units of work nav kernels report, and the meters that count them.
 #pragma once
 
 #include <array>

@@ -1,3 +1,4 @@
+// Prohibited zones: steps, slopes, margins and unknown ground, pixel by pixel.
 #pragma once
 
 #include "marsokhod/nav/terrain/elevation.hpp"

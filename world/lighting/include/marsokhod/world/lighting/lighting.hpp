@@ -1,3 +1,4 @@
+// Lighting: sun, sky and exposure, and the named presets of the paper's test sites.
 #pragma once
 
 #include <string>

@@ -1,3 +1,4 @@
+// The lit surface: terrain radiance under a lighting, with cast shadows, on the terrain grid.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

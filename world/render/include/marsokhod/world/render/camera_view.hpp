@@ -1,3 +1,4 @@
+// One camera of the rig placed in the world for a rover placement, ready for casting rays.
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"

@@ -1,3 +1,4 @@
+// Ground truth of a rendered pair: range, disparity, elevation and masks per left pixel.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

@@ -1,3 +1,4 @@
+// The maximum mipmap: a quadtree of height maxima for fast ray casting on the terrain.
 #pragma once
 
 #include "marsokhod/world/terrain/terrain.hpp"

@@ -1,3 +1,4 @@
+// The ray-casting stereo renderer: options, rendered pairs and their ground truth.
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"

@@ -1,3 +1,4 @@
+// Camera sensor noise: Gaussian deviates that are the same on every standard library.
 #pragma once
 
 #include <cstdint>

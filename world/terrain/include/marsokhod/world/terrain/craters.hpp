@@ -1,3 +1,4 @@
+// Craters and pits of the synthetic site: their size distribution, shape and carving.
 #pragma once
 
 #include "marsokhod/world/terrain/height_field.hpp"

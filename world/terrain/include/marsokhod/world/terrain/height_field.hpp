@@ -1,3 +1,4 @@
+// The height field: heights on a square grid, bilinear between nodes, in the world frame.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

@@ -1,3 +1,4 @@
+// The ground truth's obstacle map: the terrain judged against the rover's locomotion limits.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

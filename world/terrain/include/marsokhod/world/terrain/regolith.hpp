@@ -1,3 +1,4 @@
+// The bare regolith: undulation, regional slope, roughness and albedo of the site.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

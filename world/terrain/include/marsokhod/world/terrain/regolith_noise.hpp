@@ -1,3 +1,4 @@
+// Value noise on grid images for the regolith: octaves, fractal sums and white noise.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

@@ -1,3 +1,4 @@
+// Rocks of the synthetic site: the Golombek and Rapp abundance model, shapes and placement.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

@@ -1,3 +1,4 @@
+// Seeded random numbers for the terrain: hash mixing, substreams and lattice values.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// The synthetic Mars site: generator settings and the generated terrain.
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"
