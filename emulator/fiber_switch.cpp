@@ -1,5 +1,5 @@
-// The fiber switch of the fast builds: Boost's x86-64 jump_fcontext, ending with a return
-// instead of an indirect jump.
+// The returning fiber switch: Boost 1.74's x86-64 jump_fcontext, ending with a return instead
+// of an indirect jump; and which switch the build uses.
 //
 // Boost's version loads the resumed context's return address and jumps to it. The call into
 // the switch, though, pushed an entry on the processor's return-stack predictor that no return
@@ -12,9 +12,34 @@
 // address), so a context suspended here can be resumed, unwound or ended by Boost's own
 // jump_fcontext and ontop_fcontext, and the other way round.
 
+#include "marsokhod/emulator/fiber_switch.hpp"
+
 #include "fiber.hpp"
 
-#if MARSOKHOD_RETURNING_SWITCH
+#include <string_view>
+
+#if !MARSOKHOD_HAVE_RETURNING_SWITCH && !defined(BOOST_USE_UCONTEXT) &&                            \
+    !defined(BOOST_USE_WINFIB) && defined(__x86_64__) && defined(__ELF__)
+#pragma message("the returning fiber switch is written for Boost 1.74.0 (BOOST_VERSION 107400); "  \
+                "this Boost switches with its own fiber::resume")
+#endif
+
+namespace marsokhod::emulator {
+
+std::string_view fiber_switch_name() {
+  return MARSOKHOD_RETURNING_SWITCH ? "returning" : "boost";
+}
+
+// The build system works out the same choice (emulator/CMakeLists.txt); they must agree.
+#ifdef MARSOKHOD_FIBER_SWITCH_EXPECTED
+static_assert(std::string_view(MARSOKHOD_FIBER_SWITCH_EXPECTED) ==
+                  (MARSOKHOD_RETURNING_SWITCH ? "returning" : "boost"),
+              "the fiber switch compiled in is not the one CMake selected");
+#endif
+
+} // namespace marsokhod::emulator
+
+#if MARSOKHOD_HAVE_RETURNING_SWITCH
 
 asm(R"(
     .pushsection .text
