@@ -1,11 +1,9 @@
 // Host cost of the emulator's hot path: Commstime, four channel communications per loop, each
-// one a context switch between two simulated processes; the bare fiber switches it sits on,
-// Boost's public one and the returning one, are measured in the same run (bare_fiber_switch.cpp).
-// Each benchmark is labelled with the switch the kernel was built with (MARSOKHOD_FIBER_SWITCH).
+// one a context switch between two simulated processes; the bare fiber switch it sits on is
+// measured in the same run (bare_fiber_switch.cpp).
 
 #include "bare_fiber_switch.hpp"
 
-#include "marsokhod/emulator/fiber_switch.hpp"
 #include "marsokhod/emulator/kernel.hpp"
 #include "marsokhod/emulator/node.hpp"
 #include "marsokhod/emulator/platform.hpp"
@@ -15,7 +13,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <string>
 
 namespace {
 
@@ -57,28 +54,24 @@ void run_commstime(benchmark::State& state, bool parallel_delta) {
   }
   state.counters["ns_per_communication"] = per(communications);
   state.counters["communications"] = static_cast<double>(communications);
-  state.SetLabel(std::string(emulator::fiber_switch_name()));
 }
 
-// SEQ Commstime and as many bare fiber switches as it made communications, of each kind, one
-// right after the other in every iteration, so that all see the host at the same speed: the
-// host drifts by a quarter within one run, and the ratio, the cost of a communication in bare
-// (Boost) switches, says what the absolute figure would be on the host as it was at any other
-// time.
+// SEQ Commstime and as many bare fiber switches as it made communications, one right after
+// the other in every iteration, so that both see the host at the same speed: the host drifts
+// by a quarter within one run, and the ratio, the cost of a communication in bare switches,
+// says what the absolute figure would be on the host as it was at any other time.
 void BM_CommstimeSeqAgainstBareSwitch(benchmark::State& state) {
   const emulator::NodeSpec spec = t805_30();
   const std::int64_t loops = state.range(0);
   std::int64_t communications = 0;
   double commstime_seconds = 0.0;
   double bare_seconds = 0.0;
-  double returning_seconds = 0.0;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     const std::int64_t made = run_commstime_once(spec, loops, false);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     bare_seconds += benches::time_bare_fiber_switches(made);
-    returning_seconds += benches::time_returning_fiber_switches(made);
     commstime_seconds += seconds;
     communications += made;
     state.SetIterationTime(seconds);
@@ -88,11 +81,6 @@ void BM_CommstimeSeqAgainstBareSwitch(benchmark::State& state) {
       benchmark::Counter(1e9 * bare_seconds / static_cast<double>(communications));
   state.counters["bare_switches_per_communication"] =
       benchmark::Counter(commstime_seconds / bare_seconds);
-  if (returning_seconds > 0) {
-    state.counters["ns_per_returning_switch"] =
-        benchmark::Counter(1e9 * returning_seconds / static_cast<double>(communications));
-  }
-  state.SetLabel(std::string(emulator::fiber_switch_name()));
 }
 
 void BM_CommstimeSeqDelta(benchmark::State& state) {

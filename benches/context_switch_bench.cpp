@@ -1,7 +1,6 @@
-// Host cost of switching between simulated processes, against bare fiber switches, Boost's and
-// the returning one (bare_fiber_switch.cpp), and the memory of many live processes.
+// Host cost of switching between simulated processes, against a bare Boost.Context switch
+// (bare_fiber_switch.cpp), and the memory of many live processes.
 
-#include "marsokhod/emulator/fiber_switch.hpp"
 #include "marsokhod/emulator/kernel.hpp"
 
 #include <benchmark/benchmark.h>
@@ -32,7 +31,6 @@ void BM_KernelYieldSwitch(benchmark::State& state) {
   }
   state.counters["ns_per_switch"] = benchmark::Counter(
       static_cast<double>(switches), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.SetLabel(std::string(fiber_switch_name()));
 }
 BENCHMARK(BM_KernelYieldSwitch)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
