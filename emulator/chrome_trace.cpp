@@ -1,3 +1,5 @@
+// Trace records written as Chrome Trace Event JSON.
+
 #include "marsokhod/emulator/chrome_trace.hpp"
 
 #include <fmt/format.h>

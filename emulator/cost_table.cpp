@@ -1,3 +1,5 @@
+// Mnemonics of the T805 instructions and the cycle count of an instruction mix.
+
 #include "marsokhod/emulator/cost_table.hpp"
 
 #include <algorithm>
@@ -6,29 +8,32 @@ namespace marsokhod::emulator {
 
 namespace {
 
-// Same order as enum class Instruction.
-constexpr std::string_view kMnemonics[] = {
-    "ldl",          "stl",         "ldlp",         "ldnl",
-    "stnl",         "ldnlp",       "ldc",          "adc",
-    "eqc",          "ajw",         "lb",           "sb",
-    "bsub",         "wsub",        "add",          "sub",
-    "diff",         "sum",         "gt",           "and",
-    "or",           "xor",         "not",          "shl",
-    "shr",          "mul",         "prod",         "div",
-    "rem",          "j",           "cj_not_taken", "cj_taken",
-    "call",         "ret",         "lend_loop",    "lend_exit",
-    "pfix",         "nfix",        "move",         "startp",
-    "endp",         "runp",        "stopp",        "in",
-    "out",          "outbyte",     "outword",      "alt",
-    "altwt_ready",  "altwt_wait",  "enbc_ready",   "enbc_not_ready",
-    "disc",         "enbs",        "diss",         "altend",
-    "ldtimer",      "tin_passed",  "tin_wait",     "talt",
-    "taltwt_ready", "taltwt_wait", "enbt",         "dist",
-    "fpadd",        "fpsub",       "fpmul",        "fpmul_db",
-    "fpdiv",        "fpdiv_db",    "fpldnlsn",     "fpldnldb",
-    "fpstnlsn",     "fpgt",        "fprtoi32",     "fpusqrtstep"};
+// The platform-file key of an enumerator of instruction_list.def: its name without the trailing
+// underscore that steps around a keyword (and_ is "and").
+constexpr std::string_view mnemonic_of(std::string_view enumerator) {
+  if (enumerator.ends_with('_')) {
+    enumerator.remove_suffix(1);
+  }
+  return enumerator;
+}
 
-static_assert(std::size(kMnemonics) == kInstructionCount, "one mnemonic per instruction");
+// Indexed by enum class Instruction, generated from the same list.
+constexpr std::array<std::string_view, kInstructionCount> kMnemonics = {
+#define MARSOKHOD_INSTRUCTION(name) mnemonic_of(#name),
+#include "marsokhod/emulator/instruction_list.def"
+};
+
+constexpr bool mnemonics_are_unique() {
+  for (std::size_t i = 0; i < kMnemonics.size(); ++i) {
+    for (std::size_t j = i + 1; j < kMnemonics.size(); ++j) {
+      if (kMnemonics[i] == kMnemonics[j]) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+static_assert(mnemonics_are_unique(), "two instructions would share a platform-file key");
 
 } // namespace
 
@@ -37,11 +42,11 @@ std::string_view mnemonic(Instruction instruction) {
 }
 
 std::optional<Instruction> instruction_from_mnemonic(std::string_view name) {
-  const auto* found = std::find(std::begin(kMnemonics), std::end(kMnemonics), name);
-  if (found == std::end(kMnemonics)) {
+  const auto found = std::find(kMnemonics.begin(), kMnemonics.end(), name);
+  if (found == kMnemonics.end()) {
     return std::nullopt;
   }
-  return static_cast<Instruction>(found - std::begin(kMnemonics));
+  return static_cast<Instruction>(found - kMnemonics.begin());
 }
 
 InstructionMix& InstructionMix::add(Instruction instruction, std::uint64_t times,

@@ -1,3 +1,5 @@
+// A simulated CPU: its scheduling constants and its two ready queues.
+
 #include "marsokhod/emulator/cpu.hpp"
 
 #include "marsokhod/emulator/kernel.hpp"

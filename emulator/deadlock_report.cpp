@@ -1,3 +1,5 @@
+// The text of a deadlock report: every process that can never run again.
+
 #include "marsokhod/emulator/deadlock_report.hpp"
 
 #include <fmt/format.h>

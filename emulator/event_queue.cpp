@@ -1,3 +1,5 @@
+// The kernel's queue of pending events, ordered by time, priority and sequence.
+
 #include "event_queue.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// The kernel's queue of pending events, ordered by time, priority and sequence.
 #pragma once
 
 #include "marsokhod/emulator/kernel.hpp"

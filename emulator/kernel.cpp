@@ -1,3 +1,5 @@
+// The discrete-event kernel: its run loop, events and the public process calls.
+
 #include "marsokhod/emulator/kernel.hpp"
 
 #include "kernel_impl.hpp"

@@ -1,3 +1,4 @@
+// The kernel's private state: fibers, the process registry and its internal events.
 #pragma once
 
 #include "event_queue.hpp"

@@ -1,8 +1,7 @@
-#pragma once
-
 // The hot path of a process switch, inline so that blocking, the choice of the next process
 // and the fiber jump happen in one frame: fewer calls between two fibers means fewer returns
 // whose prediction the stack switch spoils.
+#pragma once
 
 #include "kernel_impl.hpp"
 

@@ -1,3 +1,5 @@
+// A T805 link: the wire between two ends, its handshake steps, power and breaks.
+
 #include "marsokhod/emulator/link.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// The cameras' frame store: answers an image request on each of its links.
+
 #include "marsokhod/emulator/link_frame_store.hpp"
 
 #include <fmt/format.h>

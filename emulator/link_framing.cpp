@@ -1,3 +1,5 @@
+// The handshake timing of a link: data and acknowledge packets, bit by bit.
+
 #include "marsokhod/emulator/link_framing.hpp"
 
 #include <algorithm>

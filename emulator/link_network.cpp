@@ -1,3 +1,5 @@
+// Every link of a platform, built from its wiring.
+
 #include "marsokhod/emulator/link_network.hpp"
 
 #include "marsokhod/emulator/node.hpp"

@@ -1,3 +1,5 @@
+// A node's end of a link as its processes see it: outputs and inputs over the wire.
+
 #include "marsokhod/emulator/link.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// The link throughput experiment: byte streams between two nodes over one wire.
+
 #include "marsokhod/emulator/link_stream.hpp"
 
 #include "marsokhod/emulator/kernel.hpp"

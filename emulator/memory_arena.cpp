@@ -1,3 +1,5 @@
+// A node's memory: on-chip and external regions, allocation and the address map.
+
 #include "marsokhod/emulator/memory_arena.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// The memory fault a node raises when an allocation cannot be met.
+
 #include "marsokhod/emulator/memory_arena_fault.hpp"
 
 #include <fmt/format.h>

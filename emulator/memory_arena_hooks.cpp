@@ -1,3 +1,5 @@
+// Connects a node's memory to the kernel: owner of each allocation, trace counters.
+
 #include "marsokhod/emulator/memory_arena_hooks.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// A T805 node: CPU cost model, priorities, timers, memory and link ports.
+
 #include "marsokhod/emulator/node.hpp"
 
 #include "marsokhod/emulator/link.hpp"

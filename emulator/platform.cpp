@@ -1,3 +1,5 @@
+// Reading a platform file: nodes, devices and the wiring between them.
+
 #include "marsokhod/emulator/platform.hpp"
 
 #include "platform_processor.hpp"

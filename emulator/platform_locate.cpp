@@ -1,3 +1,5 @@
+// Finding a platform file by name in the folders it may be shipped in.
+
 #include "marsokhod/emulator/platform.hpp"
 
 #include <fmt/format.h>

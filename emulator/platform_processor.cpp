@@ -1,3 +1,5 @@
+// Reading a processor file: scheduling, timers, memory and the cost table.
+
 #include "platform_processor.hpp"
 
 #include "platform_table_reader.hpp"

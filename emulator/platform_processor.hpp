@@ -1,3 +1,4 @@
+// Reading a processor file: what the nodes of one processor type share.
 #pragma once
 
 #include "marsokhod/emulator/platform.hpp"

@@ -1,3 +1,5 @@
+// Typed, checked reads of one TOML table of a platform file.
+
 #include "platform_table_reader.hpp"
 
 #include <fmt/format.h>

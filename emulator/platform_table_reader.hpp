@@ -1,3 +1,4 @@
+// Typed, checked reads of one TOML table of a platform file.
 #pragma once
 
 #include "marsokhod/emulator/platform.hpp"

@@ -1,3 +1,5 @@
+// Simulated processes: the names of what they wait for, and the process record.
+
 #include "marsokhod/emulator/process.hpp"
 
 #include "fiber.hpp"

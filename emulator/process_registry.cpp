@@ -1,3 +1,5 @@
+// Every live process, oldest first, and the memory of deleted ones kept for reuse.
+
 #include "process_registry.hpp"
 
 #include <new>

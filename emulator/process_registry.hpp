@@ -1,3 +1,4 @@
+// Every live process, oldest first, and the memory of deleted ones kept for reuse.
 #pragma once
 
 #include "marsokhod/emulator/process.hpp"

@@ -1,3 +1,5 @@
+// Guard-paged fiber stacks from mmap, kept for reuse.
+
 #include "stack_pool.hpp"
 
 #include <new>

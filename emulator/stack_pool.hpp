@@ -1,3 +1,4 @@
+// Guard-paged fiber stacks from mmap, kept for reuse.
 #pragma once
 
 #include "fiber.hpp"

@@ -1,3 +1,5 @@
+// Simulated time: formatting ticks for people.
+
 #include "marsokhod/emulator/time.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// Chrome Trace Event JSON output: slices, counters, instants and flows.
+
 #include "marsokhod/emulator/chrome_trace.hpp"
 #include "marsokhod/emulator/kernel.hpp"
 #include "marsokhod/emulator/link.hpp"

@@ -1,3 +1,6 @@
+// The T805 cost model: instruction mnemonics, cycle counts of instruction mixes, and the node
+// that charges them.
+
 #include "marsokhod/emulator/cost_table.hpp"
 #include "marsokhod/emulator/node.hpp"
 #include "marsokhod/emulator/platform.hpp"
@@ -5,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
+#include <string_view>
 
 namespace marsokhod::emulator {
 namespace {
@@ -22,6 +27,25 @@ TEST(CostTable, EveryInstructionHasAMnemonicThatMapsBack) {
         << mnemonic(instruction);
   }
   EXPECT_FALSE(instruction_from_mnemonic("frobnicate").has_value());
+}
+
+TEST(CostTable, EveryMnemonicMapsToItsInstructionAndNamesAreUnique) {
+  std::set<std::string_view> names;
+  for (std::size_t i = 0; i < kInstructionCount; ++i) {
+    const std::string_view name = mnemonic(static_cast<Instruction>(i));
+    EXPECT_FALSE(name.empty()) << i;
+    EXPECT_TRUE(names.insert(name).second) << name << " names two instructions";
+    const std::optional<Instruction> back = instruction_from_mnemonic(name);
+    ASSERT_TRUE(back.has_value()) << name;
+    EXPECT_EQ(mnemonic(*back), name);
+  }
+  EXPECT_EQ(names.size(), kInstructionCount);
+  // The platform file's keys, not the C++ spellings that step around keywords.
+  EXPECT_EQ(mnemonic(Instruction::and_), "and");
+  EXPECT_EQ(mnemonic(Instruction::not_), "not");
+  EXPECT_FALSE(instruction_from_mnemonic("and_").has_value());
+  EXPECT_EQ(mnemonic(Instruction::ldl), "ldl");
+  EXPECT_EQ(mnemonic(Instruction::fpusqrtstep), "fpusqrtstep");
 }
 
 TEST(CostTable, MixCostsTheDataBookCyclesOnChip) {

@@ -1,3 +1,5 @@
+// Kernel events: their order, tags, cancellation, run limits and stops; time formatting.
+
 #include "marsokhod/emulator/kernel.hpp"
 
 #include <gtest/gtest.h>

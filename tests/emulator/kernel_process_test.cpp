@@ -1,3 +1,5 @@
+// Kernel processes: spawning, blocking, waking, killing and deadlock reports.
+
 #include "marsokhod/emulator/kernel.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// Each process keeps its own floating-point rounding mode and masks across switches.
+
 #include "marsokhod/emulator/kernel.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// The cameras' frame store: image requests and answers over its links.
+
 #include "marsokhod/emulator/link_frame_store.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// Link handshake timing: data and acknowledge packets at a given speed.
+
 #include "marsokhod/emulator/link_framing.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// The link throughput experiment: streams arrive intact at the wire rate.
+
 #include "marsokhod/emulator/link_stream.hpp"
 
 #include <gtest/gtest.h>

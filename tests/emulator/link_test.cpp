@@ -1,3 +1,5 @@
+// T805 links: transfers, handshake timing, dead ends and broken wires.
+
 #include "marsokhod/emulator/link.hpp"
 #include "marsokhod/emulator/link_network.hpp"
 #include "marsokhod/emulator/node.hpp"

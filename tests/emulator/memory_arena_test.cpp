@@ -1,3 +1,5 @@
+// A node's memory: the address map, allocation, faults and trace counters.
+
 #include "marsokhod/emulator/chrome_trace.hpp"
 #include "marsokhod/emulator/memory_arena.hpp"
 #include "marsokhod/emulator/memory_arena_hooks.hpp"

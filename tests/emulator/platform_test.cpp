@@ -1,3 +1,5 @@
+// Platform and processor files: what they describe and every error they can hold.
+
 #include "marsokhod/emulator/platform.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// A trace sink that writes Chrome Trace Event JSON (Perfetto UI, chrome://tracing).
 #pragma once
 
 #include "marsokhod/emulator/trace_sink.hpp"

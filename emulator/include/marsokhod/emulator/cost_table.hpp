@@ -1,3 +1,5 @@
+// The T805 cost model: its instructions, their data-book timings, and the processor part of a
+// node description.
 #pragma once
 
 #include "marsokhod/emulator/time.hpp"
@@ -10,94 +12,12 @@
 
 namespace marsokhod::emulator {
 
-/// T805 instructions the cost model knows. The platform file's [cost_table] names them by
-/// mnemonic(); variants whose timing depends on an outcome get a suffix (cj_taken).
+/// T805 instructions the cost model knows, one per entry of instruction_list.def. The platform
+/// file's [cost_table] names them by mnemonic(); variants whose timing depends on an outcome get
+/// a suffix (cj_taken).
 enum class Instruction : std::uint8_t {
-  // load/store
-  ldl,
-  stl,
-  ldlp,
-  ldnl,
-  stnl,
-  ldnlp,
-  ldc,
-  adc,
-  eqc,
-  ajw,
-  lb,
-  sb,
-  bsub,
-  wsub,
-  // arithmetic; shl/shr take n+2 (units = bits), prod b+4 (units = bits of the multiplier)
-  add,
-  sub,
-  diff,
-  sum,
-  gt,
-  and_,
-  or_,
-  xor_,
-  not_,
-  shl,
-  shr,
-  mul,
-  prod,
-  div,
-  rem,
-  // control
-  j,
-  cj_not_taken,
-  cj_taken,
-  call,
-  ret,
-  lend_loop,
-  lend_exit,
-  pfix,
-  nfix,
-  // block move 2w+8 (units = words)
-  move,
-  // processes
-  startp,
-  endp,
-  runp,
-  stopp,
-  // channels: in/out 2w+19 (units = words)
-  in,
-  out,
-  outbyte,
-  outword,
-  // ALT
-  alt,
-  altwt_ready,
-  altwt_wait,
-  enbc_ready,
-  enbc_not_ready,
-  disc,
-  enbs,
-  diss,
-  altend,
-  // timers
-  ldtimer,
-  tin_passed,
-  tin_wait,
-  talt,
-  taltwt_ready,
-  taltwt_wait,
-  enbt,
-  dist,
-  // FPU (runs concurrently with the integer processor)
-  fpadd,
-  fpsub,
-  fpmul,
-  fpmul_db,
-  fpdiv,
-  fpdiv_db,
-  fpldnlsn,
-  fpldnldb,
-  fpstnlsn,
-  fpgt,
-  fprtoi32,
-  fpusqrtstep,
+#define MARSOKHOD_INSTRUCTION(name) name,
+#include "marsokhod/emulator/instruction_list.def"
   count
 };
 

@@ -1,3 +1,4 @@
+// A simulated CPU: scheduling constants, two ready queues and the process it runs.
 #pragma once
 
 #include "marsokhod/emulator/process.hpp"

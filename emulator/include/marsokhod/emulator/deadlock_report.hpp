@@ -1,3 +1,4 @@
+// What a deadlock leaves behind: every process that can never run again, and where.
 #pragma once
 
 #include "marsokhod/emulator/process.hpp"

@@ -1,5 +1,3 @@
-#pragma once
-
 // The discrete-event kernel: simulated time, the event queue, and processes on fibers.
 //
 // How to use it (link engines, memory arenas, devices, the occam layer):
@@ -33,6 +31,7 @@
 //   slice per process run on each CPU's "cpu" track.
 // * run() / run_until(t) / run_for(d) drive the simulation; they stop with a
 //   DeadlockReport when every live process is blocked and no event is pending.
+#pragma once
 
 #include "marsokhod/emulator/cpu.hpp"
 #include "marsokhod/emulator/deadlock_report.hpp"

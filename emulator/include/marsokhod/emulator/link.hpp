@@ -1,3 +1,4 @@
+// T805 links: an output and an input DMA engine at each end of a wire.
 #pragma once
 
 #include "marsokhod/emulator/kernel.hpp"

@@ -1,3 +1,4 @@
+// The cameras' frame store: a device that answers image requests over its links.
 #pragma once
 
 #include "marsokhod/emulator/link_network.hpp"

@@ -1,3 +1,4 @@
+// The handshake timing of a link at a given speed: data and acknowledge packets.
 #pragma once
 
 #include "marsokhod/emulator/platform.hpp"

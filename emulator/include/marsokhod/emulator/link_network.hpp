@@ -1,3 +1,4 @@
+// Every link of a platform, built from its wiring, each at its wire's speed.
 #pragma once
 
 #include "marsokhod/emulator/kernel.hpp"

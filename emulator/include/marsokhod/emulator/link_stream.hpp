@@ -1,3 +1,4 @@
+// The link throughput experiment: byte streams between two nodes over one wire.
 #pragma once
 
 #include "marsokhod/emulator/platform.hpp"

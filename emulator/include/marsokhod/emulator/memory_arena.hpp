@@ -1,3 +1,4 @@
+// A node's memory: the T805 address map, on-chip and external regions, allocation.
 #pragma once
 
 #include "marsokhod/emulator/memory_arena_fault.hpp"

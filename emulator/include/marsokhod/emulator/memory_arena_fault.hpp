@@ -1,3 +1,4 @@
+// The memory fault a node raises when an allocation cannot be met.
 #pragma once
 
 #include <cstddef>

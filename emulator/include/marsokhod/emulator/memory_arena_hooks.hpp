@@ -1,3 +1,4 @@
+// Connects a node's memory to the kernel: owner of each allocation, trace counters.
 #pragma once
 
 #include "marsokhod/emulator/kernel.hpp"

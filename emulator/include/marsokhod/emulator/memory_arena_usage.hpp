@@ -1,3 +1,4 @@
+// Whole-node memory figures: bytes in use and high-water marks per region.
 #pragma once
 
 #include <cstddef>

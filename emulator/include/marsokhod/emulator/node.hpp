@@ -1,3 +1,4 @@
+// A T805 node: CPU cost model, two priorities, timers, memory and link ports.
 #pragma once
 
 #include "marsokhod/emulator/cost_table.hpp"

@@ -1,3 +1,4 @@
+// Platform and processor files: the nodes, devices and wiring of a transputer network.
 #pragma once
 
 #include "marsokhod/emulator/cost_table.hpp"

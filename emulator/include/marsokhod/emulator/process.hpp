@@ -1,3 +1,4 @@
+// A simulated process: its state, priority, what it waits for, and its fiber.
 #pragma once
 
 #include "marsokhod/emulator/time.hpp"

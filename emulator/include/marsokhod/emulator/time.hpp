@@ -1,3 +1,4 @@
+// Simulated time: integer picosecond ticks, their units and their formatting.
 #pragma once
 
 #include <cstdint>

@@ -1,3 +1,4 @@
+// The receiver of trace records: tracks, slices, counters, instants and flows.
 #pragma once
 
 #include "marsokhod/emulator/time.hpp"
