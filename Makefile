@@ -5,7 +5,7 @@ BUILD_DIR := build/$(PRESET)
 MARSOKHOD := $(BUILD_DIR)/apps/marsokhod
 OUT ?= out
 
-.PHONY: all setup configure build run test bench sanitize format clean
+.PHONY: all setup configure build run test bench sanitize format format-check clean
 
 all: build
 
@@ -33,8 +33,11 @@ SANITIZE_SCOPE ?= layers
 sanitize: setup
 	@sh scripts/sanitize.sh $(SANITIZE_SCOPE)
 
-format:
-	@find imaging nav world emulator occam_port apps tests benches \( -name '*.cpp' -o -name '*.hpp' \) -print0 | xargs -0 clang-format -i
+format: setup
+	@git ls-files '*.cpp' '*.hpp' | xargs clang-format -i
+
+format-check: setup
+	@sh scripts/check-format.sh
 
 clean:
 	@rm -rf build

@@ -1,9 +1,9 @@
 #include "command.hpp"
 
-#include "marsokhod/emulator/chrome_trace.hpp"
-#include "marsokhod/emulator/kernel.hpp"
-#include "marsokhod/emulator/node.hpp"
-#include "marsokhod/emulator/platform.hpp"
+#include "marsokhod/emulator/trace/chrome_trace.hpp"
+#include "marsokhod/emulator/kernel/kernel.hpp"
+#include "marsokhod/emulator/node/node.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/occam_port/commstime.hpp"
 
 #include <fmt/format.h>

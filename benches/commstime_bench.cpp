@@ -5,9 +5,9 @@
 
 #include "bare_fiber_switch.hpp"
 
-#include "marsokhod/emulator/kernel.hpp"
-#include "marsokhod/emulator/node.hpp"
-#include "marsokhod/emulator/platform.hpp"
+#include "marsokhod/emulator/kernel/kernel.hpp"
+#include "marsokhod/emulator/node/node.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/occam_port/commstime.hpp"
 
 #include <benchmark/benchmark.h>

@@ -2,7 +2,7 @@
 // Host cost of switching between simulated processes, against a bare Boost.Context switch
 // (bare_fiber_switch.cpp), and the memory of many live processes.
 
-#include "marsokhod/emulator/kernel.hpp"
+#include "marsokhod/emulator/kernel/kernel.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -2,9 +2,9 @@
 // Host cost of the link model: nanoseconds of host time per emulated byte, for the pure framing
 // state machine and for a full stream between two emulated nodes (kernel events, processes).
 
-#include "marsokhod/emulator/link_framing.hpp"
-#include "marsokhod/emulator/link_stream.hpp"
-#include "marsokhod/emulator/platform.hpp"
+#include "marsokhod/emulator/links/link_framing.hpp"
+#include "marsokhod/emulator/links/link_stream.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
 
 #include <benchmark/benchmark.h>
 

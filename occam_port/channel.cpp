@@ -2,8 +2,8 @@
 
 #include "marsokhod/occam_port/channel.hpp"
 
-#include "marsokhod/emulator/link.hpp"
-#include "marsokhod/emulator/node.hpp"
+#include "marsokhod/emulator/links/link.hpp"
+#include "marsokhod/emulator/node/node.hpp"
 #include "marsokhod/occam_port/alt.hpp"
 
 #include <span>

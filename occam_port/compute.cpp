@@ -2,7 +2,7 @@
 
 #include "marsokhod/occam_port/compute.hpp"
 
-#include "marsokhod/emulator/node.hpp"
+#include "marsokhod/emulator/node/node.hpp"
 
 namespace marsokhod::occam_port {
 

@@ -2,7 +2,7 @@
 
 #include "marsokhod/occam_port/par.hpp"
 
-#include "marsokhod/emulator/node.hpp"
+#include "marsokhod/emulator/node/node.hpp"
 
 #include <fmt/format.h>
 

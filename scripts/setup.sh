@@ -4,7 +4,7 @@
 set -eu
 
 packages="g++ cmake ninja-build pkgconf libboost-context-dev libeigen3-dev libfmt-dev libgtest-dev
-libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libpng-dev"
+libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libpng-dev clang-format"
 
 missing=""
 for package in $packages; do

@@ -1,10 +1,10 @@
 // Two onboard modules joined by a link, for the occam layer's external channel tests.
 #pragma once
 
-#include "marsokhod/emulator/kernel.hpp"
-#include "marsokhod/emulator/link_network.hpp"
-#include "marsokhod/emulator/node.hpp"
-#include "marsokhod/emulator/platform.hpp"
+#include "marsokhod/emulator/kernel/kernel.hpp"
+#include "marsokhod/emulator/links/link_network.hpp"
+#include "marsokhod/emulator/node/node.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/occam_port/channel.hpp"
 
 #include <filesystem>

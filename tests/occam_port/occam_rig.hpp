@@ -1,9 +1,9 @@
 // A kernel and one T805-30 node from the shipped pc-card platform, for the occam layer tests.
 #pragma once
 
-#include "marsokhod/emulator/kernel.hpp"
-#include "marsokhod/emulator/node.hpp"
-#include "marsokhod/emulator/platform.hpp"
+#include "marsokhod/emulator/kernel/kernel.hpp"
+#include "marsokhod/emulator/node/node.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
 
 #include <string>
 

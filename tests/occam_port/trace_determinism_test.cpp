@@ -2,7 +2,7 @@
 
 #include "occam_port/occam_rig.hpp"
 
-#include "marsokhod/emulator/chrome_trace.hpp"
+#include "marsokhod/emulator/trace/chrome_trace.hpp"
 #include "marsokhod/occam_port/commstime.hpp"
 #include "marsokhod/occam_port/occam.hpp"
 

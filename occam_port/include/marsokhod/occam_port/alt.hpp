@@ -1,7 +1,7 @@
 // ALT and PRI ALT, index form: guards and the transputer's enable/wait/disable sequence.
 #pragma once
 
-#include "marsokhod/emulator/kernel.hpp"
+#include "marsokhod/emulator/kernel/kernel.hpp"
 #include "marsokhod/occam_port/channel.hpp"
 #include "marsokhod/occam_port/timer.hpp"
 

@@ -1,8 +1,8 @@
 // Occam channels: the untyped ChanBase (internal or on a link) and the typed Chan<T>.
 #pragma once
 
-#include "marsokhod/emulator/cost_table.hpp"
-#include "marsokhod/emulator/kernel.hpp"
+#include "marsokhod/emulator/node/cost_table.hpp"
+#include "marsokhod/emulator/kernel/kernel.hpp"
 #include "marsokhod/occam_port/chan_ends.hpp"
 
 #include <cstddef>

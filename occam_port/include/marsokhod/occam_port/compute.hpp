@@ -1,7 +1,7 @@
 // compute(): charges the current process for executing instructions.
 #pragma once
 
-#include "marsokhod/emulator/cost_table.hpp"
+#include "marsokhod/emulator/node/cost_table.hpp"
 
 #include <cstdint>
 

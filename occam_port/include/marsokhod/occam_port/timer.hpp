@@ -1,7 +1,7 @@
 // The occam TIMER and AFTER comparison on the wrapping transputer clock.
 #pragma once
 
-#include "marsokhod/emulator/time.hpp"
+#include "marsokhod/emulator/kernel/time.hpp"
 
 #include <cstdint>
 

@@ -1,0 +1,133 @@
+// T805 links: an output and an input DMA engine at each end of a wire.
+#pragma once
+
+#include "marsokhod/emulator/kernel/kernel.hpp"
+#include "marsokhod/emulator/links/link_framing.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+
+namespace marsokhod::emulator {
+
+class Link;
+
+/// One end of a link as its node sees it: an output and an input DMA engine that run on
+/// their own while the CPU computes. Occam's external channels use it: a process outputs or
+/// inputs a whole message and blocks until the engine is done; an ALT asks whether a byte is
+/// waiting and is told when one arrives.
+class LinkPort : public WaitTarget {
+public:
+  /// Called when a transfer has finished (from a kernel event; must not block).
+  using Done = std::function<void()>;
+
+  /// "module0.link2".
+  const std::string& name() const { return name_; }
+  Link& link() const { return *link_; }
+  int end() const { return end_; }
+
+  /// Sends `message`: returns once its last byte is acknowledged. Only from a process.
+  void output(std::span<const std::byte> message);
+  /// Fills `buffer` from the link: returns once its last byte has arrived. Only from a process.
+  void input(std::span<std::byte> buffer);
+
+  /// Starts sending without blocking; `done` runs after the last acknowledge. The bytes must
+  /// stay valid until then. One output at a time.
+  void start_output(std::span<const std::byte> message, Done done);
+  /// Starts receiving without blocking; `done` runs after the last byte (possibly before this
+  /// returns, when the message is one byte that was already waiting). One input at a time.
+  void start_input(std::span<std::byte> buffer, Done done);
+  bool output_busy() const { return output_.active; }
+  bool input_busy() const { return input_.active; }
+
+  /// A byte has arrived that no input has taken yet (an ALT guard on this link is ready).
+  bool byte_waiting() const;
+  /// `listener` runs when a byte arrives with no input waiting for it (ALT enable); an empty
+  /// function removes it (ALT disable).
+  void set_arrival_listener(std::function<void()> listener);
+
+  std::string describe() const override;
+
+private:
+  friend class Link;
+  struct Transfer {
+    bool active = false;
+    std::span<std::byte> in;
+    std::span<const std::byte> out;
+    std::size_t started = 0; ///< bytes put on the wire (output)
+    std::size_t done = 0;    ///< bytes acknowledged (output) or stored (input)
+    std::uint64_t flow = 0;  ///< trace arrow from this output to the peer's input track
+    Done on_done;
+  };
+
+  void finish(Transfer& transfer, TrackId track);
+  void abandon_output();
+  void abandon_input();
+
+  std::string name_;
+  Link* link_ = nullptr;
+  int end_ = 0;
+  Transfer output_;
+  Transfer input_;
+  std::byte held_{};
+  std::function<void()> arrival_listener_;
+  TrackId out_track_ = 0;
+  TrackId in_track_ = 0;
+};
+
+/// A pair of wires between two link ports, driven through the kernel's event queue by the
+/// framing machine. Bytes move only between powered ends over an unbroken cable.
+class Link : public EventHandler {
+public:
+  /// `id` makes trace flow ids unique across links.
+  Link(Kernel& kernel, std::string end0, std::string end1, const LinkTiming& timing,
+       std::uint32_t id = 0);
+  Link(const Link&) = delete;
+  Link& operator=(const Link&) = delete;
+  ~Link() override;
+
+  LinkPort& port(int end) { return ports_[end]; }
+  const LinkFraming& framing() const { return framing_; }
+  Kernel& kernel() const { return *kernel_; }
+
+  /// Power change of the node at `end`: its engines stop and forget their transfers (a
+  /// process of that node waiting on them is being killed anyway); powering on resets them.
+  /// Setting the state an end already has changes nothing.
+  void set_powered(int end, bool powered);
+  void set_broken(bool broken);
+
+  void on_event(std::uint64_t tag) override;
+
+private:
+  friend class LinkPort;
+  void offered();
+  void reschedule();
+  void handle(const LinkStep& step);
+  void on_data_start(int sender);
+  void on_data_end(int sender, bool accepted);
+  void on_ack_end(int sender);
+  void declare_tracks(TraceSink& sink);
+  /// The kernel's sink with this link's tracks declared, or nullptr.
+  TraceSink* trace();
+  std::uint64_t next_flow_id();
+
+  Kernel* kernel_;
+  LinkFraming framing_;
+  std::array<LinkPort, 2> ports_;
+  std::array<std::byte, 2> on_wire_{};
+  /// Flow id of the message whose last byte is on each wire, 0 otherwise.
+  std::array<std::uint64_t, 2> last_byte_flow_{};
+  std::uint32_t id_;
+  std::uint64_t messages_ = 0;
+  bool tracks_declared_ = false;
+  /// Expires with the link, so a process unwinding after it knows not to touch its port.
+  std::shared_ptr<int> alive_ = std::make_shared<int>(0);
+  EventId event_ = 0;
+  Tick event_time_ = kNever;
+};
+
+} // namespace marsokhod::emulator

@@ -1,0 +1,46 @@
+// The cameras' frame store: a device that answers image requests over its links.
+#pragma once
+
+#include "marsokhod/emulator/links/link_network.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace marsokhod::emulator {
+
+/// The cameras' frame store behind a device's links (platform `kind = "frame_store"`). On every
+/// wired link it waits for a one-byte request, the camera number, and answers with that
+/// camera's image: image_height rows of image_width pixels, one byte per pixel for 8 bits, two
+/// (little-endian) for 16. A request for a camera it does not have gets no answer. It runs on
+/// the link engines alone (no process), so it never shows in a deadlock report.
+class FrameStore {
+public:
+  /// The image a camera holds now; must return exactly image_bytes() bytes.
+  using ImageSource = std::function<std::vector<std::byte>(int camera)>;
+
+  FrameStore(LinkNetwork& network, const DeviceSpec& device, ImageSource source);
+  FrameStore(const FrameStore&) = delete;
+  FrameStore& operator=(const FrameStore&) = delete;
+
+  std::size_t image_bytes() const;
+  std::size_t requests_served() const { return served_; }
+
+private:
+  struct Server {
+    LinkPort* port = nullptr;
+    std::byte request{};
+    std::vector<std::byte> image;
+  };
+  void listen(Server& server);
+  void answer(Server& server);
+
+  DeviceSpec device_;
+  ImageSource source_;
+  std::vector<std::unique_ptr<Server>> servers_;
+  std::size_t served_ = 0;
+};
+
+} // namespace marsokhod::emulator

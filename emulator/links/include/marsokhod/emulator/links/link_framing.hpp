@@ -1,0 +1,119 @@
+// The handshake timing of a link at a given speed: data and acknowledge packets.
+#pragma once
+
+#include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/emulator/kernel/time.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace marsokhod::emulator {
+
+/// The handshake timing of one link at one speed, in picoseconds.
+struct LinkTiming {
+  Tick bit = 0;
+  Tick data_packet = 0;
+  Tick ack_packet = 0;
+  Tick ack_delay = 0;
+  Tick ack_turnaround = 0;
+  Tick gap = 0;
+
+  /// Bit-time parameters times the bit time of `mbps` (10 Mbit/s: 100'000 ps per bit).
+  static LinkTiming from(const LinkTimingSpec& spec, int mbps);
+};
+
+/// What the framing machine did in one step.
+struct LinkStep {
+  enum class Kind : std::uint8_t {
+    none,
+    data_end,  ///< a data packet finished arriving at `end`'s peer
+    ack_end,   ///< an acknowledge finished arriving at `end` (the data sender)
+    ack_start, ///< `end` started an acknowledge
+    data_start ///< `end` started a data packet
+  };
+  Kind kind = Kind::none;
+  int end = 0;
+  Tick time = 0;
+  /// data_end: the receiver had an input waiting and took the byte (otherwise the byte waits
+  /// unacknowledged in the receiver's one-byte buffer, or was lost on a dead link).
+  /// ack_end: the sender was waiting for it (it was not reset meanwhile).
+  bool accepted = false;
+};
+
+/// The INMOS link protocol between two ends (0 and 1) as a pure state machine of byte counts
+/// and times. Each end sends 11-bit data packets on its own wire and acknowledges its peer's
+/// packets with 2-bit packets on that same wire, so acknowledges share the wire with data.
+/// A receiver with an input waiting acknowledges `ack_delay` after the start bit (or as soon
+/// as its wire is free); a sender starts its next byte only after the acknowledge of the
+/// previous one has arrived plus `ack_turnaround`. Throughput follows from these rules alone.
+class LinkFraming {
+public:
+  explicit LinkFraming(const LinkTiming& timing);
+
+  const LinkTiming& timing() const { return timing_; }
+  Tick now() const { return now_; }
+
+  /// `end` has `bytes` more to send (an output instruction started at `now`).
+  void offer_output(int end, Tick now, std::uint64_t bytes);
+  /// `end` wants `bytes` more (an input instruction started at `now`). Returns true when a
+  /// byte was already waiting in its buffer: it is taken at once (and acknowledged).
+  bool offer_input(int end, Tick now, std::uint64_t bytes);
+  /// A byte waits unacknowledged in `end`'s receive buffer (an ALT guard on the link is ready).
+  bool byte_waiting(int end) const { return ends_[end].holding; }
+  /// Bytes `end` still has to send (including one awaiting its acknowledge).
+  std::uint64_t output_left(int end) const;
+  std::uint64_t input_left(int end) const { return ends_[end].accept_budget; }
+
+  /// Stops everything `end` does and forgets its state (power-off, link reset). Packets on the
+  /// wire from the other end are lost; that end's sender waits for an acknowledge forever.
+  void reset_end(int end, Tick now, bool alive);
+  /// Forgets the bytes `end` has not started sending yet (its process gave up the output).
+  void withdraw_output(int end) { ends_[end].queued = 0; }
+  /// Forgets how many bytes `end` still wanted (its process gave up the input).
+  void withdraw_input(int end) { ends_[end].accept_budget = 0; }
+  bool alive(int end) const { return ends_[end].alive; }
+  /// A broken cable: packets are sent but never arrive.
+  void set_broken(bool broken) { broken_ = broken; }
+  bool broken() const { return broken_; }
+
+  /// Time of the next step, kNever when nothing can happen without new offers.
+  Tick next_time() const;
+  /// Performs the earliest step (time order; at one instant packet ends, then acknowledges,
+  /// then data, end 0 before end 1). Returns Kind::none when nothing is pending.
+  LinkStep step();
+
+private:
+  struct End {
+    bool alive = true;
+    // Sender side: bytes not yet started, and the state of the byte on the wire.
+    std::uint64_t queued = 0;
+    bool awaiting_ack = false;
+    Tick next_data_allowed = 0;
+    // The wire this end drives: data packets out, acknowledges of the peer's data.
+    Tick wire_free = 0;
+    Tick data_end = kNever;     ///< end of the data packet on this end's wire
+    bool data_accepted = false; ///< its receiver had taken it at the start bit
+    Tick data_start = 0;
+    Tick ack_end = kNever; ///< end of the acknowledge on this end's wire
+    // Receiver side.
+    std::uint64_t accept_budget = 0;
+    bool holding = false; ///< one unacknowledged byte in the receive buffer
+    bool ack_owed = false;
+    Tick ack_ready = kNever; ///< earliest start of the owed acknowledge
+  };
+
+  Tick data_start_time(int end) const;
+  Tick ack_start_time(int end) const;
+  void accept_in_flight(int receiver);
+  void start_data(int sender, Tick at);
+  void end_data(int sender, LinkStep& step);
+  void start_ack(int receiver, Tick at);
+  void end_ack(int receiver, LinkStep& step);
+
+  LinkTiming timing_;
+  std::array<End, 2> ends_{};
+  Tick now_ = 0;
+  bool broken_ = false;
+};
+
+} // namespace marsokhod::emulator

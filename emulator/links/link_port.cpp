@@ -1,0 +1,146 @@
+// A node's end of a link as its processes see it: outputs and inputs over the wire.
+
+#include "marsokhod/emulator/links/link.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <stdexcept>
+#include <utility>
+
+namespace marsokhod::emulator {
+namespace {
+
+Process& current_process(Kernel& kernel, const std::string& port) {
+  Process* self = kernel.current();
+  if (self == nullptr)
+    throw std::logic_error(fmt::format("blocking transfer on {} outside a process", port));
+  return *self;
+}
+
+/// Gives up a transfer when its process is killed while blocked on it (power-off, end of the
+/// simulation), so that no later event calls back into the unwound stack frame.
+class AbandonOnUnwind {
+public:
+  AbandonOnUnwind(const bool& done, std::weak_ptr<int> link_alive, std::function<void()> abandon)
+      : done_(done), link_alive_(std::move(link_alive)), abandon_(std::move(abandon)) {}
+  ~AbandonOnUnwind() {
+    if (!done_ && !link_alive_.expired())
+      abandon_();
+  }
+  AbandonOnUnwind(const AbandonOnUnwind&) = delete;
+  AbandonOnUnwind& operator=(const AbandonOnUnwind&) = delete;
+
+private:
+  const bool& done_;
+  std::weak_ptr<int> link_alive_;
+  std::function<void()> abandon_;
+};
+
+} // namespace
+
+void LinkPort::output(std::span<const std::byte> message) {
+  Kernel& kernel = link_->kernel();
+  Process& self = current_process(kernel, name_);
+  bool done = false;
+  start_output(message, [&] {
+    done = true;
+    kernel.wake(self);
+  });
+  AbandonOnUnwind guard(done, link_->alive_, [this] { abandon_output(); });
+  while (!done)
+    kernel.block(WaitInfo{WaitKind::link_output, this});
+}
+
+void LinkPort::input(std::span<std::byte> buffer) {
+  Kernel& kernel = link_->kernel();
+  Process& self = current_process(kernel, name_);
+  bool done = false;
+  start_input(buffer, [&] {
+    done = true;
+    kernel.wake(self);
+  });
+  AbandonOnUnwind guard(done, link_->alive_, [this] { abandon_input(); });
+  while (!done)
+    kernel.block(WaitInfo{WaitKind::link_input, this});
+}
+
+void LinkPort::start_output(std::span<const std::byte> message, Done done) {
+  if (output_.active)
+    throw std::logic_error(fmt::format("{}: an output is already in progress", name_));
+  if (message.empty()) {
+    done();
+    return;
+  }
+  Kernel& kernel = link_->kernel();
+  output_ = Transfer{true, {}, message, 0, 0, link_->next_flow_id(), std::move(done)};
+  if (TraceSink* sink = link_->trace()) {
+    sink->begin_slice(out_track_, kernel.now(), fmt::format("out {} bytes", message.size()));
+    sink->flow_begin(out_track_, kernel.now(), output_.flow);
+  }
+  link_->framing_.offer_output(end_, kernel.now(), message.size());
+  link_->reschedule();
+}
+
+void LinkPort::start_input(std::span<std::byte> buffer, Done done) {
+  if (input_.active)
+    throw std::logic_error(fmt::format("{}: an input is already in progress", name_));
+  if (buffer.empty()) {
+    done();
+    return;
+  }
+  Kernel& kernel = link_->kernel();
+  input_ = Transfer{true, buffer, {}, 0, 0, 0, std::move(done)};
+  if (TraceSink* sink = link_->trace())
+    sink->begin_slice(in_track_, kernel.now(), fmt::format("in {} bytes", buffer.size()));
+  if (link_->framing_.offer_input(end_, kernel.now(), buffer.size())) {
+    input_.in[input_.done++] = held_;
+    if (input_.done == input_.in.size())
+      finish(input_, in_track_);
+  }
+  link_->reschedule();
+}
+
+void LinkPort::finish(Transfer& transfer, TrackId track) {
+  Done done = std::move(transfer.on_done);
+  transfer = Transfer{};
+  if (TraceSink* sink = link_->trace())
+    sink->end_slice(track, link_->kernel().now());
+  if (done)
+    done();
+}
+
+void LinkPort::abandon_output() {
+  link_->framing_.withdraw_output(end_);
+  output_ = Transfer{};
+  if (TraceSink* sink = link_->trace())
+    sink->end_slice(out_track_, link_->kernel().now());
+}
+
+void LinkPort::abandon_input() {
+  link_->framing_.withdraw_input(end_);
+  input_ = Transfer{};
+  if (TraceSink* sink = link_->trace())
+    sink->end_slice(in_track_, link_->kernel().now());
+}
+
+bool LinkPort::byte_waiting() const {
+  return link_->framing_.byte_waiting(end_);
+}
+
+void LinkPort::set_arrival_listener(std::function<void()> listener) {
+  arrival_listener_ = std::move(listener);
+}
+
+std::string LinkPort::describe() const {
+  std::string text = "link " + name_;
+  if (output_.active)
+    text += fmt::format(", output: {} of {} bytes unacknowledged",
+                        output_.out.size() - output_.done, output_.out.size());
+  if (input_.active)
+    text += fmt::format(", input: {} of {} bytes still to come", input_.in.size() - input_.done,
+                        input_.in.size());
+  return text;
+}
+
+} // namespace marsokhod::emulator

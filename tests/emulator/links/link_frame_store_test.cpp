@@ -1,0 +1,83 @@
+// The cameras' frame store: image requests and answers over its links.
+
+#include "marsokhod/emulator/links/link_frame_store.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <vector>
+
+namespace marsokhod::emulator {
+namespace {
+
+const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+
+/// A recognisable image per camera.
+std::vector<std::byte> test_image(int camera, std::size_t bytes) {
+  std::vector<std::byte> image(bytes);
+  for (std::size_t i = 0; i < bytes; ++i)
+    image[i] = std::byte(static_cast<unsigned char>(i % 251 + static_cast<unsigned>(camera) * 3));
+  return image;
+}
+
+TEST(FrameStore, ServesTheRequestedCameraOverTheModulesDeviceLink) {
+  const PlatformSpec onboard = load_platform(kPlatforms / "onboard.toml");
+  const DeviceSpec& device = *onboard.find_device("rover_io");
+  Kernel kernel;
+  Cpu& module1 = kernel.add_cpu("module1");
+  LinkNetwork network(kernel, onboard);
+  const std::size_t bytes = 128 * 128; // onboard.toml: 128 x 128, 8 bits per pixel
+  FrameStore store(network, device, [&](int camera) { return test_image(camera, bytes); });
+  ASSERT_EQ(store.image_bytes(), bytes);
+
+  std::vector<std::byte> left(bytes);
+  std::vector<std::byte> right(bytes);
+  Tick first_done = 0;
+  kernel.spawn(module1, "grab", [&] {
+    LinkPort& devices = network.require_port("module1", 3);
+    const std::byte camera0{0};
+    const std::byte camera1{1};
+    devices.output(std::span(&camera0, 1));
+    devices.input(left);
+    first_done = kernel.now();
+    devices.output(std::span(&camera1, 1));
+    devices.input(right);
+  });
+  EXPECT_EQ(kernel.run().reason, StopReason::finished);
+  EXPECT_EQ(left, test_image(0, bytes));
+  EXPECT_EQ(right, test_image(1, bytes));
+  EXPECT_EQ(store.requests_served(), 2U);
+  // Request byte then 16384 image bytes, each 11 bits at 100 ns, plus the handshakes between
+  // the request and the answer: within 1 % of (1 + 16384) x 1.1 us.
+  EXPECT_NEAR(to_microseconds(first_done), (1 + 16384) * 1.1, 0.01 * 16385 * 1.1);
+}
+
+TEST(FrameStore, RequestForAMissingCameraGetsNoAnswer) {
+  const PlatformSpec onboard = load_platform(kPlatforms / "onboard.toml");
+  Kernel kernel;
+  Cpu& module0 = kernel.add_cpu("module0");
+  LinkNetwork network(kernel, onboard);
+  FrameStore store(network, *onboard.find_device("rover_io"),
+                   [](int camera) { return test_image(camera, 128 * 128); });
+  bool answered = false;
+  kernel.spawn(module0, "grab", [&] {
+    const std::byte camera{7};
+    std::byte pixel{};
+    network.require_port("module0", 3).output(std::span(&camera, 1));
+    network.require_port("module0", 3).input(std::span(&pixel, 1));
+    answered = true;
+  });
+  EXPECT_EQ(kernel.run().reason, StopReason::deadlock);
+  EXPECT_FALSE(answered);
+  EXPECT_EQ(store.requests_served(), 0U);
+}
+
+TEST(FrameStore, OnlyFrameStoreDevicesQualify) {
+  const PlatformSpec card = load_platform(kPlatforms / "pc-card.toml");
+  Kernel kernel;
+  LinkNetwork network(kernel, card);
+  EXPECT_THROW(FrameStore(network, *card.find_device("host"), {}), std::invalid_argument);
+}
+
+} // namespace
+} // namespace marsokhod::emulator
