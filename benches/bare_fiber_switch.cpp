@@ -16,15 +16,13 @@ double time_bare_fiber_switches(std::int64_t switches) {
   namespace ctx = boost::context;
   bool done = false;
   ctx::fiber other([&done](ctx::fiber&& back) {
-    while (!done) {
+    while (!done)
       back = std::move(back).resume();
-    }
     return std::move(back);
   });
   const auto start = std::chrono::steady_clock::now();
-  for (std::int64_t i = 0; i < switches; ++i) {
+  for (std::int64_t i = 0; i < switches; ++i)
     other = std::move(other).resume();
-  }
   const auto end = std::chrono::steady_clock::now();
   done = true;
   std::move(other).resume();
@@ -35,9 +33,8 @@ namespace {
 
 void BM_BareFiberSwitch(benchmark::State& state) {
   constexpr std::int64_t kSwitches = 1 << 20;
-  for (auto _ : state) {
+  for (auto _ : state)
     state.SetIterationTime(time_bare_fiber_switches(kSwitches));
-  }
   state.counters["ns_per_switch"] =
       benchmark::Counter(static_cast<double>(state.iterations() * kSwitches),
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);

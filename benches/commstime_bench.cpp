@@ -50,9 +50,8 @@ void run_commstime(benchmark::State& state, bool parallel_delta) {
   const emulator::NodeSpec spec = t805_30();
   const std::int64_t loops = state.range(0);
   std::int64_t communications = 0;
-  for (auto _ : state) {
+  for (auto _ : state)
     communications += run_commstime_once(spec, loops, parallel_delta);
-  }
   state.counters["ns_per_communication"] = per(communications);
   state.counters["communications"] = static_cast<double>(communications);
 }

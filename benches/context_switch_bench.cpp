@@ -21,11 +21,12 @@ void BM_KernelYieldSwitch(benchmark::State& state) {
     Kernel kernel;
     Cpu& cpu = kernel.add_cpu("node0");
     for (int i = 0; i < 2; ++i) {
-      kernel.spawn(cpu, "p", [&kernel, yields] {
-        for (std::int64_t n = 0; n < yields; ++n) {
-          kernel.yield();
-        }
-      });
+      kernel.spawn(
+          cpu, "p",
+          [&kernel, yields] {
+            for (std::int64_t n = 0; n < yields; ++n)
+              kernel.yield();
+          });
     }
     kernel.run();
     switches += static_cast<std::int64_t>(kernel.context_switches());
@@ -59,17 +60,18 @@ void BM_TenThousandLiveProcesses(benchmark::State& state) {
     Kernel kernel(KernelOptions{stack_bytes});
     Cpu& cpu = kernel.add_cpu("node0");
     for (int i = 0; i < count; ++i) {
-      kernel.spawn(cpu, "p", [&kernel] {
-        volatile char frame[1024] = {};
-        benchmark::DoNotOptimize(frame[0]);
-        kernel.block(WaitInfo{});
-      });
+      kernel.spawn(
+          cpu, "p",
+          [&kernel] {
+            volatile char frame[1024] = {};
+            benchmark::DoNotOptimize(frame[0]);
+            kernel.block(WaitInfo{});
+          });
     }
     const RunResult result = kernel.run();
     if (result.reason != StopReason::deadlock ||
-        kernel.live_processes() != static_cast<std::size_t>(count)) {
+        kernel.live_processes() != static_cast<std::size_t>(count))
       state.SkipWithError("processes did not all block");
-    }
     peak_growth_kb = std::max(peak_growth_kb, resident_kb() - before);
   }
   state.counters["rss_growth_MB"] = static_cast<double>(peak_growth_kb) / 1024.0;

@@ -3,8 +3,8 @@
 // prohibited zones, safest path and drive commands (target: at most 5 ms on one core), each
 // stage after stereo on its own, and the chain with a counting meter to show what metering
 // costs. The scene (default site, seed 1, high sun) is rendered once, outside the timed loops.
-#include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/world/render/renderer.hpp"
 #include "marsokhod/world/terrain/terrain.hpp"
 

@@ -4,8 +4,8 @@
 // enough for the whole navigation chain to fit in 5 ms. The NullMeter figures must equal the
 // figures of a build with metering compiled out (-DMARSOKHOD_NAV_UNMETERED); the CountingMeter
 // and DynamicMeter figures show what metering costs when it is on.
-#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/stereo/stereo.hpp"
 #include "marsokhod/nav/work/work.hpp"
 #include "marsokhod/world/render/renderer.hpp"

@@ -73,7 +73,8 @@ int run(const std::filesystem::path& platform_file) {
   };
   constexpr int kMessages = 7;
   // Spawned in this order, so they first run in this order at time 0.
-  spawn_high("mux", [&] { mux(in0, in1, out); });
+  spawn_high(
+      "mux", [&] { mux(in0, in1, out); });
   spawn_high("consumer", [&] { print_received(out, kMessages, kernel); });
   spawn_high("producer.0", [&] {
     send_after(in0, 50, 10);

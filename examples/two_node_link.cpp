@@ -61,7 +61,8 @@ int run(const std::filesystem::path& platform_file) {
   Chan<std::int32_t> channel("module0->module1");
   channel.place_on_link(*m0.link(0), *m1.link(0));
   emu::Tick last_arrival = 0;
-  m0.spawn("producer", [&] { producer(channel, kernel); });
+  m0.spawn(
+      "producer", [&] { producer(channel, kernel); });
   m1.spawn("consumer", [&] { consumer(channel, kernel, last_arrival); });
 
   const emu::RunResult result = kernel.run();

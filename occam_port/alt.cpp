@@ -24,20 +24,17 @@ AltState::~AltState() {
   for (std::size_t i = 0; i < enabled_; ++i) {
     const Guard& g = guards_[i];
     if (g.kind == Guard::Kind::channel && g.precondition &&
-        std::find(gone_.begin(), gone_.end(), g.channel) == gone_.end()) {
+        std::find(gone_.begin(), gone_.end(), g.channel) == gone_.end())
       g.channel->disable(*this);
-    }
   }
 }
 
 void AltState::guard_ready() {
-  if (ready_) {
+  if (ready_)
     return;
-  }
   ready_ = true;
-  if (waiting_) {
+  if (waiting_)
     kernel_.wake(process_);
-  }
 }
 
 std::string AltState::describe() const {
@@ -86,9 +83,8 @@ bool AltState::enable_all() {
     case Guard::Kind::timer:
       if (g.precondition) {
         ready_ = ready_ || is_after(clock, g.after);
-        if (!timer_seen || is_after(earliest_, g.after)) {
+        if (!timer_seen || is_after(earliest_, g.after))
           earliest_ = g.after;
-        }
         timer_seen = true;
       }
       cycles += static_cast<std::uint64_t>(costs[Instruction::enbt].base);
@@ -105,14 +101,12 @@ bool AltState::enable_all() {
 
 void AltState::wait() {
   Node& node = Node::current();
-  if (has_timer_) {
+  if (has_timer_)
     node.execute(ready_ ? Instruction::taltwt_ready : Instruction::taltwt_wait);
-  } else {
+  else
     node.execute(ready_ ? Instruction::altwt_ready : Instruction::altwt_wait);
-  }
-  if (ready_) {
+  if (ready_)
     return;
-  }
   waiting_ = true;
   const emulator::WaitInfo why{emulator::WaitKind::alt, this};
   if (has_timer_) {
@@ -153,9 +147,8 @@ std::size_t AltState::disable_all() {
       ready = g.precondition;
       break;
     }
-    if (ready && selected == guards_.size()) {
+    if (ready && selected == guards_.size())
       selected = i;
-    }
   }
   enabled_ = 0;
   return selected;
@@ -166,9 +159,8 @@ std::size_t AltState::run() {
     enable_all();
     wait();
     const std::size_t selected = disable_all();
-    if (selected < guards_.size()) {
+    if (selected < guards_.size())
       return selected;
-    }
     // Woken but nothing is ready any more (cannot happen with one-to-one channels); retry.
     ready_ = false;
   }
@@ -177,9 +169,8 @@ std::size_t AltState::run() {
 std::size_t pri_alt(std::span<const Guard> guards) {
   emulator::Kernel* kernel = emulator::Kernel::active();
   emulator::Process* process = kernel != nullptr ? kernel->current() : nullptr;
-  if (process == nullptr) {
+  if (process == nullptr)
     throw std::logic_error("ALT used outside a simulated process");
-  }
   AltState state(*kernel, *process, guards);
   return state.run();
 }

@@ -49,21 +49,18 @@ Here here() {
   Kernel* kernel = Kernel::active();
   Process* p = kernel != nullptr ? kernel->current() : nullptr;
   Node* node = p != nullptr ? p->cpu().node() : nullptr;
-  if (node == nullptr) [[unlikely]] {
+  if (node == nullptr) [[unlikely]]
     not_on_node();
-  }
   return Here{*kernel, *p, *node};
 }
 
 } // namespace
 
 ChanBase::~ChanBase() {
-  if (registration_ != nullptr) {
+  if (registration_ != nullptr)
     registration_->channel_ = nullptr;
-  }
-  if (alt_ != nullptr) {
+  if (alt_ != nullptr)
     alt_->channel_gone(*this);
-  }
 }
 
 std::string ChanBase::describe() const {
@@ -82,9 +79,8 @@ void ChanBase::place_on_link(emulator::LinkPort& output_port, emulator::LinkPort
 
 emulator::Tick ChanBase::charge(Charge& cached, const Node& node, Instruction op,
                                 std::size_t bytes) const {
-  if (cached.node == node.serial() && cached.bytes == bytes) [[likely]] {
+  if (cached.node == node.serial() && cached.bytes == bytes) [[likely]]
     return cached.time;
-  }
   const std::uint64_t cycles = channel_cycles(node, op, external() ? 0 : words(bytes));
   cached = Charge{node.serial(), bytes, node.cycles(cycles)};
   return cached.time;
@@ -108,9 +104,8 @@ void ChanBase::output(const void* message, std::size_t bytes, CopyFn copy,
                       Registration& registration) {
   auto [kernel, me, node] = here();
   const emulator::Tick time = charge(output_charge_, node, Instruction::out, bytes);
-  if (!kernel.consume_quickly(time)) [[unlikely]] {
+  if (!kernel.consume_quickly(time)) [[unlikely]]
     return output_after_slow_charge(time, message, bytes, copy, registration);
-  }
   output_charged(kernel, me, message, bytes, copy, registration);
 }
 
@@ -123,32 +118,27 @@ void ChanBase::output_after_slow_charge(emulator::Tick time, const void* message
 
 inline void ChanBase::output_charged(Kernel& kernel, Process& me, const void* message,
                                      std::size_t bytes, CopyFn copy, Registration& registration) {
-  if (external()) [[unlikely]] {
+  if (external()) [[unlikely]]
     return output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
-  }
-  if (state_ == State::writer_waiting) [[unlikely]] {
+  if (state_ == State::writer_waiting) [[unlikely]]
     two_sides("outputting");
-  }
   if (state_ == State::reader_waiting) {
-    if (!copy_inline(data_, message, copy)) [[unlikely]] {
+    if (!copy_inline(data_, message, copy)) [[unlikely]]
       return complete_with_call(kernel, data_, message, copy);
-    }
     complete(kernel);
     return;
   }
   wait_here(registration, State::writer_waiting, me, const_cast<void*>(message), bytes);
-  if (alt_ != nullptr) [[unlikely]] {
+  if (alt_ != nullptr) [[unlikely]]
     return tell_alt_and_block(kernel);
-  }
   kernel.block(emulator::WaitInfo{emulator::WaitKind::channel_output, this});
 }
 
 void ChanBase::input(void* message, std::size_t bytes, CopyFn copy, Registration& registration) {
   auto [kernel, me, node] = here();
   const emulator::Tick time = charge(input_charge_, node, Instruction::in, bytes);
-  if (!kernel.consume_quickly(time)) [[unlikely]] {
+  if (!kernel.consume_quickly(time)) [[unlikely]]
     return input_after_slow_charge(time, message, bytes, copy, registration);
-  }
   input_charged(kernel, me, message, bytes, copy, registration);
 }
 
@@ -161,16 +151,13 @@ void ChanBase::input_after_slow_charge(emulator::Tick time, void* message, std::
 
 inline void ChanBase::input_charged(Kernel& kernel, Process& me, void* message, std::size_t bytes,
                                     CopyFn copy, Registration& registration) {
-  if (external()) [[unlikely]] {
+  if (external()) [[unlikely]]
     return input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
-  }
-  if (state_ == State::reader_waiting) [[unlikely]] {
+  if (state_ == State::reader_waiting) [[unlikely]]
     two_sides("inputting");
-  }
   if (state_ == State::writer_waiting) {
-    if (!copy_inline(message, data_, copy)) [[unlikely]] {
+    if (!copy_inline(message, data_, copy)) [[unlikely]]
       return complete_with_call(kernel, message, data_, copy);
-    }
     complete(kernel);
     return;
   }
@@ -219,15 +206,13 @@ bool ChanBase::ready_for_input() const {
 
 bool ChanBase::enable(AltState& alt) {
   if (external()) {
-    if (input_port_->byte_waiting()) {
+    if (input_port_->byte_waiting())
       return true;
-    }
     input_port_->set_arrival_listener([&alt] { alt.guard_ready(); });
     return false;
   }
-  if (state_ == State::writer_waiting) {
+  if (state_ == State::writer_waiting)
     return true;
-  }
   alt_ = &alt;
   return false;
 }
@@ -237,9 +222,8 @@ bool ChanBase::disable(AltState& alt) {
     input_port_->set_arrival_listener({});
     return input_port_->byte_waiting();
   }
-  if (alt_ == &alt) {
+  if (alt_ == &alt)
     alt_ = nullptr;
-  }
   return state_ == State::writer_waiting;
 }
 

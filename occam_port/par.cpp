@@ -43,9 +43,8 @@ public:
   bool empty() const { return size_ == 0; }
   std::size_t size() const { return size_; }
   void push_back(Process* p) {
-    if (size_ == capacity_) {
+    if (size_ == capacity_)
       throw std::logic_error("PAR started more branches than it announced");
-    }
     data_[size_++] = p;
   }
   Process* pop_back() { return data_[--size_]; }
@@ -75,9 +74,8 @@ public:
   Join& operator=(const Join&) = delete;
   ~Join() override {
     // The parent is being killed: its branches go with it (they refer to its stack).
-    while (!children_.empty()) {
+    while (!children_.empty())
       kernel_.kill(*children_.pop_back());
-    }
   }
 
   void started(Process& child) { children_.push_back(&child); }
@@ -85,9 +83,8 @@ public:
     children_.erase(&child);
     // Only a parent waiting at the join may be woken: before that it is running its own
     // branch and may be blocked on something else entirely.
-    if (children_.empty() && waiting_) {
+    if (children_.empty() && waiting_)
       kernel_.wake(parent_);
-    }
   }
   std::string describe() const override {
     return fmt::format("PAR join of {} ({} branch{} running)", parent_.name(), children_.size(),
@@ -111,9 +108,8 @@ private:
 Process& current_process(const char* construct) {
   Kernel* kernel = Kernel::active();
   Process* p = kernel != nullptr ? kernel->current() : nullptr;
-  if (p == nullptr) {
+  if (p == nullptr)
     throw std::logic_error(std::string(construct) + " used outside a simulated process");
-  }
   return *p;
 }
 
@@ -147,17 +143,15 @@ void start_branch(Node& node, Join& join, const Process& parent, std::size_t ind
 } // namespace
 
 void par(std::span<const std::function<void()>> branches, const ParOptions& options) {
-  if (branches.empty()) {
+  if (branches.empty())
     return;
-  }
   Process& parent = current_process("PAR");
   Node& node = Node::current();
   const std::size_t started = branches.size() - 1;
   Join join(node.kernel(), parent, started);
   node.execute(Instruction::startp, started);
-  for (std::size_t i = 0; i < started; ++i) {
+  for (std::size_t i = 0; i < started; ++i)
     start_branch(node, join, parent, i, branches[i], parent.priority(), options);
-  }
   branches.back()();
   node.execute(Instruction::endp);
   join.wait();
@@ -167,9 +161,8 @@ void par_for(std::size_t count, const std::function<void(std::size_t)>& body,
              const ParOptions& options) {
   std::vector<std::function<void()>> branches;
   branches.reserve(count);
-  for (std::size_t i = 0; i < count; ++i) {
+  for (std::size_t i = 0; i < count; ++i)
     branches.emplace_back([&body, i] { body(i); });
-  }
   par(std::span<const std::function<void()>>(branches), options);
 }
 

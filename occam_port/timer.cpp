@@ -18,9 +18,8 @@ std::int32_t Timer::clock_at(Tick now, Tick period) {
 
 Tick Timer::time_after(std::int32_t t, Tick now, Tick period) {
   const std::int32_t clock = clock_at(now, period);
-  if (is_after(clock, t)) {
+  if (is_after(clock, t))
     return now;
-  }
   const std::uint32_t distance = static_cast<std::uint32_t>(t) - static_cast<std::uint32_t>(clock);
   return (now / period + static_cast<Tick>(distance) + 1) * period;
 }
@@ -42,9 +41,8 @@ void Timer::wait_after(std::int32_t t) const {
   }
   node.execute(Instruction::tin_wait);
   const Tick wake_at = time_after(t, kernel.now(), period);
-  if (wake_at > kernel.now()) {
+  if (wake_at > kernel.now())
     kernel.block_until(wake_at, emulator::WaitInfo{emulator::WaitKind::timer, nullptr});
-  }
 }
 
 } // namespace marsokhod::occam_port

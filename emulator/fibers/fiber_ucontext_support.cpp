@@ -14,15 +14,13 @@ thread_local std::size_t initializer_count = 0;
 } // namespace
 
 fiber_activation_record_initializer::fiber_activation_record_initializer() noexcept {
-  if (initializer_count++ == 0) {
+  if (initializer_count++ == 0)
     current_record = new fiber_activation_record();
-  }
 }
 
 fiber_activation_record_initializer::~fiber_activation_record_initializer() {
-  if (--initializer_count == 0) {
+  if (--initializer_count == 0)
     delete current_record;
-  }
 }
 
 fiber_activation_record*& fiber_activation_record::current() noexcept {

@@ -27,9 +27,8 @@ void Kernel::Impl::start_fiber(Process& p, std::size_t stack_bytes) {
       [this, context](boost::context::fiber&& caller) -> boost::context::fiber {
         // Killed before it ever ran: the fcontext backend unwinds such a fiber without
         // entering it, the ucontext backend (sanitizer builds) enters it; return at once.
-        if (context->process->state_ == ProcessState::finished) {
+        if (context->process->state_ == ProcessState::finished)
           return std::move(caller);
-        }
         *save_slot = std::move(caller);
         after_switch();
         return fiber_main(*context);
@@ -42,9 +41,8 @@ void Kernel::Impl::run_body(Process& p) {
   } catch (const detail::ForcedUnwind&) {
     throw;
   } catch (...) {
-    if (!failure) {
+    if (!failure)
       failure = std::current_exception();
-    }
     owner->stop_requested_ = true;
   }
 }
@@ -81,9 +79,8 @@ void Kernel::Impl::finish(Process& p) {
   --owner->live_;
   --p.cpu_->live_count_;
   // The hook runs while p still holds the CPU, so a parent it wakes is picked below directly.
-  if (p.exit_hook_ != nullptr) {
+  if (p.exit_hook_ != nullptr)
     p.exit_hook_->on_exit(p);
-  }
   leave_cpu(p);
 }
 
@@ -128,13 +125,11 @@ void Kernel::Impl::Deadline::on_event(std::uint64_t tag) {
 void Kernel::Impl::Dispatch::on_event(std::uint64_t tag) {
   Cpu& cpu = *detail::from_tag<Cpu>(tag);
   cpu.dispatch_event_ = 0;
-  if (cpu.running_ != nullptr) {
+  if (cpu.running_ != nullptr)
     return;
-  }
   Process* next = cpu.pop();
-  if (next == nullptr) {
+  if (next == nullptr)
     return;
-  }
   Impl& impl = *kernel->impl_;
   impl.grant(cpu, *next);
   kernel->current_ = next;

@@ -18,9 +18,8 @@ inline void Kernel::Impl::switch_to(boost::context::fiber& target, boost::contex
 }
 
 inline void Kernel::Impl::after_switch() {
-  if (zombie != nullptr) {
+  if (zombie != nullptr)
     processes.remove_and_delete(std::exchange(zombie, nullptr));
-  }
 }
 
 inline void Kernel::Impl::assign(Cpu& cpu, Process& next) {
@@ -46,20 +45,17 @@ inline void Kernel::Impl::assign(Cpu& cpu, Process& next) {
 inline void Kernel::Impl::grant(Cpu& cpu, Process& next) {
   assign(cpu, next);
   cpu.busy_since_ = owner->now_;
-  if (owner->trace_ != nullptr) {
+  if (owner->trace_ != nullptr)
     owner->trace_->begin_slice(cpu.track_, owner->now_, next.name_);
-  }
 }
 
 inline void Kernel::Impl::release(Cpu& cpu) {
-  if (cpu.running_ == nullptr) {
+  if (cpu.running_ == nullptr)
     return;
-  }
   cpu.busy_total_ += owner->now_ - cpu.busy_since_;
   cpu.running_ = nullptr;
-  if (owner->trace_ != nullptr) {
+  if (owner->trace_ != nullptr)
     owner->trace_->end_slice(cpu.track_, owner->now_);
-  }
 }
 
 // Hands the CPU of the current process to the next ready one; returns it (nullptr: idle).
@@ -71,9 +67,8 @@ inline Process* Kernel::Impl::leave_cpu(Process& p) {
   ++owner->switches_;
   if (next == nullptr || cpu.running_ == nullptr) {
     release(cpu);
-    if (next != nullptr) {
+    if (next != nullptr)
       grant(cpu, *next);
-    }
     owner->refresh_fast_until();
     return next;
   }

@@ -21,9 +21,8 @@ std::size_t round_up(std::size_t bytes, std::size_t page) {
 void* map_stack(std::size_t mapping_bytes) {
   void* base = ::mmap(nullptr, mapping_bytes, PROT_READ | PROT_WRITE,
                       MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
-  if (base == MAP_FAILED) {
+  if (base == MAP_FAILED)
     throw std::bad_alloc();
-  }
   // The guard page sits at the low end because stacks grow downwards.
   if (::mprotect(base, StackPool::page_size(), PROT_NONE) != 0) {
     ::munmap(base, mapping_bytes);
@@ -40,11 +39,9 @@ std::size_t StackPool::page_size() {
 }
 
 StackPool::~StackPool() {
-  for (auto& [bytes, stacks] : free_) {
-    for (void* base : stacks) {
+  for (auto& [bytes, stacks] : free_)
+    for (void* base : stacks)
       ::munmap(base, bytes);
-    }
-  }
 }
 
 boost::context::stack_context StackPool::allocate(std::size_t usable_bytes) {

@@ -7,12 +7,10 @@
 namespace marsokhod::emulator::detail {
 
 bool EventQueue::later(const Entry& a, const Entry& b) {
-  if (a.time != b.time) {
+  if (a.time != b.time)
     return a.time > b.time;
-  }
-  if (a.priority != b.priority) {
+  if (a.priority != b.priority)
     return a.priority > b.priority;
-  }
   return a.sequence > b.sequence;
 }
 
@@ -51,14 +49,12 @@ void EventQueue::free_slot(std::uint32_t index) {
 
 bool EventQueue::cancel(EventId id) {
   const auto low = static_cast<std::uint32_t>(id & 0xffff'ffffU);
-  if (low == 0 || low > slots_.size()) {
+  if (low == 0 || low > slots_.size())
     return false;
-  }
   const std::uint32_t index = low - 1;
   const Slot& slot = slots_[index];
-  if (!slot.pending || slot.generation != static_cast<std::uint32_t>(id >> 32)) {
+  if (!slot.pending || slot.generation != static_cast<std::uint32_t>(id >> 32))
     return false;
-  }
   free_slot(index);
   return true;
 }
@@ -72,9 +68,8 @@ void EventQueue::drop_stale_top() {
 
 bool EventQueue::pop(Fired& out) {
   drop_stale_top();
-  if (heap_.empty()) {
+  if (heap_.empty())
     return false;
-  }
   const Entry top = heap_.front();
   std::pop_heap(heap_.begin(), heap_.end(), later);
   heap_.pop_back();

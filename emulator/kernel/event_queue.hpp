@@ -26,12 +26,10 @@ public:
   bool cancel(EventId id);
   /// Time of the earliest live event, kNever if none.
   Tick next_time() {
-    if (heap_.empty()) {
+    if (heap_.empty())
       return kNever;
-    }
-    if (!stale(heap_.front())) {
+    if (!stale(heap_.front()))
       return heap_.front().time;
-    }
     drop_stale_top();
     return heap_.empty() ? kNever : heap_.front().time;
   }

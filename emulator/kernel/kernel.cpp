@@ -34,14 +34,11 @@ Kernel::Kernel(KernelOptions options) : impl_(std::make_unique<Impl>(*this, opti
 Kernel::~Kernel() {
   // Newest first, so that PAR children unwind before the parent whose stack they refer to.
   std::vector<Process*> live;
-  for (Process* p = impl_->processes.newest(); p != nullptr; p = Impl::Registry::older(p)) {
-    if (p->state() != ProcessState::finished) {
+  for (Process* p = impl_->processes.newest(); p != nullptr; p = Impl::Registry::older(p))
+    if (p->state() != ProcessState::finished)
       live.push_back(p);
-    }
-  }
-  for (Process* p : live) {
+  for (Process* p : live)
     kill(*p);
-  }
   impl_->idle.clear();
   impl_->owned_cpus.clear();
 }
@@ -89,28 +86,23 @@ void Kernel::refresh_horizon() {
 }
 
 RunResult Kernel::run_until(Tick limit) {
-  if (current_ != nullptr) {
+  if (current_ != nullptr)
     throw std::logic_error("Kernel::run called from inside a simulated process");
-  }
   ActiveScope active(this);
   impl_->limit = limit;
   refresh_horizon();
   stop_requested_ = false;
   detail::EventQueue::Fired fired;
   for (;;) {
-    if (impl_->failure) {
+    if (impl_->failure)
       std::rethrow_exception(std::exchange(impl_->failure, nullptr));
-    }
-    if (stop_requested_) {
+    if (stop_requested_)
       return RunResult{StopReason::stopped, now_, std::nullopt};
-    }
     if (impl_->events.foreground() == 0) {
-      if (live_ > 0) {
+      if (live_ > 0)
         return RunResult{StopReason::deadlock, now_, blocked_report()};
-      }
-      if (limit == kNever || impl_->events.size() == 0) {
+      if (limit == kNever || impl_->events.size() == 0)
         return RunResult{StopReason::finished, now_, std::nullopt};
-      }
     }
     if (impl_->events.next_time() > limit) {
       now_ = limit;
@@ -119,11 +111,10 @@ RunResult Kernel::run_until(Tick limit) {
     impl_->events.pop(fired);
     now_ = fired.time;
     refresh_horizon();
-    if (fired.handler != nullptr) {
+    if (fired.handler != nullptr)
       fired.handler->on_event(fired.tag);
-    } else {
+    else
       fired.action();
-    }
   }
 }
 
@@ -134,9 +125,8 @@ Cpu& Kernel::add_cpu(std::string name, CpuTiming timing) {
 
 void Kernel::register_cpu(Cpu& cpu) {
   impl_->cpus.push_back(&cpu);
-  if (trace_ != nullptr) {
+  if (trace_ != nullptr)
     cpu.track_ = trace_->track(cpu.name(), "cpu");
-  }
 }
 
 void Kernel::unregister_cpu(Cpu& cpu) {
@@ -151,12 +141,10 @@ void Kernel::unregister_cpu(Cpu& cpu) {
 
 void Kernel::set_trace(TraceSink* sink) {
   trace_ = sink;
-  if (sink == nullptr) {
+  if (sink == nullptr)
     return;
-  }
-  for (Cpu* cpu : impl_->cpus) {
+  for (Cpu* cpu : impl_->cpus)
     cpu->track_ = sink->track(cpu->name(), "cpu");
-  }
 }
 
 DeadlockReport Kernel::blocked_report() const {
@@ -164,9 +152,8 @@ DeadlockReport Kernel::blocked_report() const {
   report.time = now_;
   for (const Cpu* cpu : impl_->cpus) {
     for (const Process* p = impl_->processes.oldest(); p != nullptr; p = Impl::Registry::newer(p)) {
-      if (&p->cpu() != cpu || p->state() != ProcessState::blocked) {
+      if (&p->cpu() != cpu || p->state() != ProcessState::blocked)
         continue;
-      }
       const std::uint64_t id = p->id();
       const WaitInfo& wait = p->wait();
       report.processes.push_back(BlockedProcess{

@@ -1,10 +1,10 @@
 // The kernel's private state: fibers, the process registry and its internal events.
 #pragma once
 
-#include "kernel/event_queue.hpp"
 #include "fibers/fiber.hpp"
-#include "kernel/process_registry.hpp"
 #include "fibers/stack_pool.hpp"
+#include "kernel/event_queue.hpp"
+#include "kernel/process_registry.hpp"
 
 #include "marsokhod/emulator/kernel/kernel.hpp"
 
@@ -75,11 +75,9 @@ struct Kernel::Impl {
   /// `stacks`, so destroyed (unwound) first.
   std::vector<Parked> idle;
   std::vector<std::unique_ptr<detail::Context>>& parked(std::size_t stack_bytes) {
-    for (Parked& entry : idle) {
-      if (entry.stack_bytes == stack_bytes) {
+    for (Parked& entry : idle)
+      if (entry.stack_bytes == stack_bytes)
         return entry.fibers;
-      }
-    }
     return idle.emplace_back(Parked{stack_bytes, {}}).fibers;
   }
   static constexpr std::size_t kMaxIdlePerSize = 256;

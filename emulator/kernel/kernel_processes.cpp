@@ -18,9 +18,8 @@ namespace {
 }
 
 inline Process& require_current(Process* current, const char* operation) {
-  if (current == nullptr) [[unlikely]] {
+  if (current == nullptr) [[unlikely]]
     no_current_process(operation);
-  }
   return *current;
 }
 
@@ -45,11 +44,10 @@ Process& Kernel::spawn(Cpu& cpu, std::string name, std::function<void()> body,
   ++live_;
   ++cpu.live_count_;
   cpu.push_back(p);
-  if (cpu.running_ == nullptr) {
+  if (cpu.running_ == nullptr)
     impl_->request_dispatch(cpu, now_);
-  } else if (p.priority_ == Priority::high && cpu.running_->priority_ == Priority::low) {
+  else if (p.priority_ == Priority::high && cpu.running_->priority_ == Priority::low)
     impl_->preempt(cpu, *cpu.running_);
-  }
   return p;
 }
 
@@ -69,9 +67,8 @@ void Kernel::consume_slowly(Tick duration) {
     Process* next = impl_->leave_cpu(p);
     impl_->switch_to(impl_->context_of(next), impl_->context_of(&p));
   }
-  if (duration <= 0) {
+  if (duration <= 0)
     return;
-  }
   if (now_ + duration < horizon_) {
     now_ += duration;
     return;
@@ -112,9 +109,8 @@ bool Kernel::block_until(Tick deadline, WaitInfo why) {
 }
 
 void Kernel::wake_slowly(Process& p) {
-  if (p.timeout_event_ != 0) {
+  if (p.timeout_event_ != 0)
     cancel(std::exchange(p.timeout_event_, 0));
-  }
   p.state_ = ProcessState::ready;
   Cpu& cpu = *p.cpu_;
   cpu.push_back(p);
@@ -122,48 +118,39 @@ void Kernel::wake_slowly(Process& p) {
     impl_->request_dispatch(cpu, now_);
     return;
   }
-  if (p.priority_ == Priority::high && cpu.running_->priority_ == Priority::low) {
+  if (p.priority_ == Priority::high && cpu.running_->priority_ == Priority::low)
     impl_->preempt(cpu, *cpu.running_);
-  }
 }
 
 void Kernel::yield() {
   Process& p = require_current(current_, "Kernel::yield");
   Cpu& cpu = *p.cpu_;
-  if (!cpu.has_ready(p.priority_) && !cpu.preempt_requested_) {
+  if (!cpu.has_ready(p.priority_) && !cpu.preempt_requested_)
     return;
-  }
   p.state_ = ProcessState::ready;
-  if (cpu.preempt_requested_) {
+  if (cpu.preempt_requested_)
     cpu.push_front(p);
-  } else {
+  else
     cpu.push_back(p);
-  }
   Process* next = impl_->leave_cpu(p);
   impl_->switch_to(impl_->context_of(next), p.context_->fiber);
 }
 
 void Kernel::kill(Process& p) {
-  if (&p == current_) {
+  if (&p == current_)
     throw std::logic_error("a process cannot kill itself: " + p.name());
-  }
-  if (p.state_ == ProcessState::finished) {
+  if (p.state_ == ProcessState::finished)
     return;
-  }
   Cpu& cpu = *p.cpu_;
-  if (p.state_ == ProcessState::ready) {
+  if (p.state_ == ProcessState::ready)
     cpu.remove(p);
-  }
-  for (std::uint64_t* event : {&p.compute_event_, &p.timeout_event_}) {
-    if (*event != 0) {
+  for (std::uint64_t* event : {&p.compute_event_, &p.timeout_event_})
+    if (*event != 0)
       cancel(std::exchange(*event, 0));
-    }
-  }
   if (cpu.running_ == &p) {
     impl_->release(cpu);
-    if (cpu.ready_count_ > 0) {
+    if (cpu.ready_count_ > 0)
       impl_->request_dispatch(cpu, now_);
-    }
   }
   p.state_ = ProcessState::finished;
   --live_;
@@ -185,17 +172,14 @@ void Kernel::kill_all(Cpu& cpu) {
   // Newest first, so that PAR branches unwind before the parent whose stack they refer to.
   std::vector<Process*> victims;
   for (Process* p = impl_->processes.newest(); p != nullptr; p = Impl::Registry::older(p)) {
-    if (p->cpu_ != &cpu || p->state_ == ProcessState::finished) {
+    if (p->cpu_ != &cpu || p->state_ == ProcessState::finished)
       continue;
-    }
-    if (p == current_) {
+    if (p == current_)
       throw std::logic_error("kill_all called by a process of the CPU " + cpu.name());
-    }
     victims.push_back(p);
   }
-  for (Process* p : victims) {
+  for (Process* p : victims)
     kill(*p);
-  }
 }
 
 } // namespace marsokhod::emulator

@@ -8,12 +8,10 @@
 namespace marsokhod::emulator::detail {
 
 ProcessRegistry::~ProcessRegistry() {
-  while (oldest_ != nullptr) {
+  while (oldest_ != nullptr)
     remove_and_delete(oldest_);
-  }
-  for (void* memory : spare_) {
+  for (void* memory : spare_)
     ::operator delete(memory);
-  }
 }
 
 Process* ProcessRegistry::create(Cpu& cpu, std::string&& name, std::uint64_t id,

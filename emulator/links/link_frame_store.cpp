@@ -30,7 +30,8 @@ std::size_t FrameStore::image_bytes() const {
 }
 
 void FrameStore::listen(Server& server) {
-  server.port->start_input(std::span(&server.request, 1), [this, &server] { answer(server); });
+  server.port->start_input(
+      std::span(&server.request, 1), [this, &server] { answer(server); });
 }
 
 void FrameStore::answer(Server& server) {

@@ -43,10 +43,12 @@ void LinkPort::output(std::span<const std::byte> message) {
   Kernel& kernel = link_->kernel();
   Process& self = current_process(kernel, name_);
   bool done = false;
-  start_output(message, [&] {
-    done = true;
-    kernel.wake(self);
-  });
+  start_output(
+      message,
+      [&] {
+        done = true;
+        kernel.wake(self);
+      });
   AbandonOnUnwind guard(done, link_->alive_, [this] { abandon_output(); });
   while (!done)
     kernel.block(WaitInfo{WaitKind::link_output, this});
@@ -56,10 +58,12 @@ void LinkPort::input(std::span<std::byte> buffer) {
   Kernel& kernel = link_->kernel();
   Process& self = current_process(kernel, name_);
   bool done = false;
-  start_input(buffer, [&] {
-    done = true;
-    kernel.wake(self);
-  });
+  start_input(
+      buffer,
+      [&] {
+        done = true;
+        kernel.wake(self);
+      });
   AbandonOnUnwind guard(done, link_->alive_, [this] { abandon_input(); });
   while (!done)
     kernel.block(WaitInfo{WaitKind::link_input, this});

@@ -11,9 +11,8 @@ namespace {
 // The platform-file key of an enumerator of instruction_list.def: its name without the trailing
 // underscore that steps around a keyword (and_ is "and").
 constexpr std::string_view mnemonic_of(std::string_view enumerator) {
-  if (enumerator.ends_with('_')) {
+  if (enumerator.ends_with('_'))
     enumerator.remove_suffix(1);
-  }
   return enumerator;
 }
 
@@ -25,11 +24,9 @@ constexpr std::array<std::string_view, kInstructionCount> kMnemonics = {
 
 constexpr bool mnemonics_are_unique() {
   for (std::size_t i = 0; i < kMnemonics.size(); ++i) {
-    for (std::size_t j = i + 1; j < kMnemonics.size(); ++j) {
-      if (kMnemonics[i] == kMnemonics[j]) {
+    for (std::size_t j = i + 1; j < kMnemonics.size(); ++j)
+      if (kMnemonics[i] == kMnemonics[j])
         return false;
-      }
-    }
   }
   return true;
 }
@@ -43,9 +40,8 @@ std::string_view mnemonic(Instruction instruction) {
 
 std::optional<Instruction> instruction_from_mnemonic(std::string_view name) {
   const auto found = std::find(kMnemonics.begin(), kMnemonics.end(), name);
-  if (found == kMnemonics.end()) {
+  if (found == kMnemonics.end())
     return std::nullopt;
-  }
   return static_cast<Instruction>(found - kMnemonics.begin());
 }
 
@@ -70,9 +66,8 @@ std::uint64_t CostTable::cycles(const InstructionMix& mix) const {
   std::uint64_t integer = 0;
   std::uint64_t fpu = 0;
   for (std::size_t i = 0; i < kInstructionCount; ++i) {
-    if (mix.count[i] == 0) {
+    if (mix.count[i] == 0)
       continue;
-    }
     const InstructionCost& cost = instructions[i];
     const std::uint64_t c = mix.count[i] * static_cast<std::uint64_t>(cost.base) +
                             mix.units[i] * static_cast<std::uint64_t>(cost.per_unit);

@@ -28,13 +28,11 @@ void Cpu::remove(Process& p) {
   Queue& q = queues_[static_cast<int>(p.priority())];
   Process* previous = nullptr;
   for (Process* at = q.head; at != nullptr; previous = at, at = at->next_ready_) {
-    if (at != &p) {
+    if (at != &p)
       continue;
-    }
     (previous == nullptr ? q.head : previous->next_ready_) = p.next_ready_;
-    if (q.tail == &p) {
+    if (q.tail == &p)
       q.tail = previous;
-    }
     p.next_ready_ = nullptr;
     --ready_count_;
     return;

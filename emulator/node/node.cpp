@@ -70,13 +70,11 @@ Tick Node::timer_period(Priority priority) const {
 }
 
 Process& Node::spawn(std::string name, std::function<void()> body, NodeSpawnOptions options) {
-  if (!powered_) {
+  if (!powered_)
     throw std::logic_error("cannot start process " + name + " on powered-off node " + spec_.name);
-  }
   SpawnOptions spawn_options{options.priority, options.stack_bytes, options.exit_hook};
-  if (options.workspace_bytes == 0) {
+  if (options.workspace_bytes == 0)
     return kernel_->spawn(*cpu_, std::move(name), std::move(body), spawn_options);
-  }
   const Address workspace = memory_->reserve_workspace(name, options.workspace_bytes);
   MemoryArena* arena = memory_.get();
   return kernel_->spawn(
@@ -89,50 +87,40 @@ Process& Node::spawn(std::string name, std::function<void()> body, NodeSpawnOpti
 }
 
 void Node::attach_link(int index, Link& link, int end) {
-  if (index < 0 || index >= kLinks) {
+  if (index < 0 || index >= kLinks)
     throw std::out_of_range("node " + spec_.name + " has no link " + std::to_string(index));
-  }
   links_[static_cast<std::size_t>(index)] = Attachment{&link, end};
   link.set_powered(end, powered_);
 }
 
 LinkPort* Node::link(int index) const {
-  if (index < 0 || index >= kLinks) {
+  if (index < 0 || index >= kLinks)
     return nullptr;
-  }
   const Attachment& a = links_[static_cast<std::size_t>(index)];
   return a.link != nullptr ? &a.link->port(a.end) : nullptr;
 }
 
 void Node::power_off() {
-  if (!powered_) {
+  if (!powered_)
     return;
-  }
   powered_ = false;
-  if (TraceSink* sink = kernel_->trace()) {
+  if (TraceSink* sink = kernel_->trace())
     sink->instant(events_track_, kernel_->now(), "power off", spec_.name);
-  }
   kernel_->kill_all(*cpu_);
-  for (const Attachment& a : links_) {
-    if (a.link != nullptr) {
+  for (const Attachment& a : links_)
+    if (a.link != nullptr)
       a.link->set_powered(a.end, false);
-    }
-  }
 }
 
 void Node::power_on() {
-  if (powered_) {
+  if (powered_)
     return;
-  }
   powered_ = true;
-  if (TraceSink* sink = kernel_->trace()) {
+  if (TraceSink* sink = kernel_->trace())
     sink->instant(events_track_, kernel_->now(), "power on", spec_.name);
-  }
-  for (const Attachment& a : links_) {
-    if (a.link != nullptr) {
+  for (const Attachment& a : links_)
+    if (a.link != nullptr)
       a.link->set_powered(a.end, true);
-    }
-  }
 }
 
 } // namespace marsokhod::emulator

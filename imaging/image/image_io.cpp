@@ -17,8 +17,9 @@ using detail::fail;
 
 bool starts_with(std::span<const std::uint8_t> bytes, std::string_view prefix) {
   return bytes.size() >= prefix.size() &&
-         std::equal(prefix.begin(), prefix.end(), bytes.begin(),
-                    [](char a, std::uint8_t b) { return static_cast<std::uint8_t>(a) == b; });
+         std::equal(
+             prefix.begin(), prefix.end(), bytes.begin(),
+             [](char a, std::uint8_t b) { return static_cast<std::uint8_t>(a) == b; });
 }
 
 // The content decides the format, never the name: a mislabelled file still reads correctly.

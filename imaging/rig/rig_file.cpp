@@ -1,9 +1,9 @@
 // Rig files: reading a TOML rig description into a StereoRig, and writing one back.
 
 #include "rig/rig_fields.hpp"
-#include "marsokhod/imaging/rig/toml_document.hpp"
 
 #include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/imaging/rig/toml_document.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>

@@ -37,7 +37,8 @@ double VerticalParallaxMap::largest_shift() const {
 }
 
 bool VerticalParallaxMap::is_identity() const {
-  return std::all_of(coefficients.begin(), coefficients.end(), [](double c) { return c == 0.0; });
+  return std::all_of(
+      coefficients.begin(), coefficients.end(), [](double c) { return c == 0.0; });
 }
 
 void check_map_size(const VerticalParallaxMap& map, int width, int height,
@@ -123,10 +124,10 @@ void cubic_row(imaging::ImageView<const std::uint8_t> right, std::span<const std
 } // namespace
 
 template <class Meter>
-imaging::Image<std::uint8_t> remove_vertical_parallax(imaging::ImageView<const std::uint8_t> right,
-                                             const VerticalParallaxMap& map,
-                                             VerticalInterpolation interpolation, Meter& meter,
-                                             std::pmr::memory_resource* memory) {
+imaging::Image<std::uint8_t>
+remove_vertical_parallax(imaging::ImageView<const std::uint8_t> right,
+                         const VerticalParallaxMap& map, VerticalInterpolation interpolation,
+                         Meter& meter, std::pmr::memory_resource* memory) {
   check_map_size(map, right.width(), right.height(), "vertical parallax map");
   const int width = right.width();
   const int last_row = right.height() - 1;
@@ -144,9 +145,9 @@ imaging::Image<std::uint8_t> remove_vertical_parallax(imaging::ImageView<const s
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template imaging::Image<std::uint8_t> remove_vertical_parallax<M>(                                        \
-      imaging::ImageView<const std::uint8_t>, const VerticalParallaxMap&, VerticalInterpolation, M&,        \
-      std::pmr::memory_resource*);
+  template imaging::Image<std::uint8_t> remove_vertical_parallax<M>(                               \
+      imaging::ImageView<const std::uint8_t>, const VerticalParallaxMap&, VerticalInterpolation,   \
+      M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

@@ -89,8 +89,8 @@ void validate(const CalibrationOptions& o) {
   require(o.min_texture >= 0.0, "min_texture must not be negative");
 }
 
-void check_images(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
-                  const CalibrationOptions& o) {
+void check_images(imaging::ImageView<const std::uint8_t> left,
+                  imaging::ImageView<const std::uint8_t> right, const CalibrationOptions& o) {
   if (left.channels() != 1 || right.channels() != 1)
     throw CalibrationError("calibration needs grey images");
   if (left.width() != right.width() || left.height() != right.height())

@@ -1,7 +1,6 @@
 // The calibration file: a vertical parallax map as TOML (docs/navigation.md, "Calibration file").
 
 #include "marsokhod/imaging/rig/toml_document.hpp"
-
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
 
 #include <fmt/format.h>

@@ -23,8 +23,8 @@ struct LeftBlock {
 
 class BlockMatcher {
 public:
-  BlockMatcher(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
-               const CalibrationOptions& options)
+  BlockMatcher(imaging::ImageView<const std::uint8_t> left,
+               imaging::ImageView<const std::uint8_t> right, const CalibrationOptions& options)
       : left_(left), right_(right), options_(options),
         pixels_(options.block_width * options.block_height) {}
 

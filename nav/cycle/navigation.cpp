@@ -19,8 +19,8 @@ namespace {
 /// Room for rocks nearer than the ground seen in the bottom row.
 constexpr double kNearRockAllowance = 1.25;
 
-void check_images_fit(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
-                      const imaging::StereoRig& rig) {
+void check_images_fit(imaging::ImageView<const std::uint8_t> left,
+                      imaging::ImageView<const std::uint8_t> right, const imaging::StereoRig& rig) {
   if (left.width() != right.width() || left.height() != right.height())
     throw std::invalid_argument(fmt::format("the left image is {}x{} but the right is {}x{}",
                                             left.width(), left.height(), right.width(),
@@ -68,11 +68,13 @@ private:
 // rather than to a wider strip, which would also hide the ground beside it. At or above the horizon
 // only the sky, or the top of something taller than the mast, can be seen; the sky must not become
 // terrain.
-imaging::Image<float> seeable_disparity(imaging::ImageView<const std::uint8_t> left, const imaging::Image<float>& disparity,
-                               const imaging::StereoRig& rig, const NavigationOptions& options,
-                               std::pmr::memory_resource* memory) {
+imaging::Image<float> seeable_disparity(imaging::ImageView<const std::uint8_t> left,
+                                        const imaging::Image<float>& disparity,
+                                        const imaging::StereoRig& rig,
+                                        const NavigationOptions& options,
+                                        std::pmr::memory_resource* memory) {
   imaging::Image<float> seeable(disparity.width(), disparity.height(), 1,
-                       std::numeric_limits<float>::infinity(), memory);
+                                std::numeric_limits<float>::infinity(), memory);
   if (seeable.empty())
     return seeable;
   const imaging::Image<std::uint8_t> textured =
@@ -123,9 +125,9 @@ int rover_max_disparity(const imaging::StereoRig& rig, const imaging::Attitude& 
 
 template <class Meter>
 NavigationResult navigate_disparity(imaging::ImageView<const float> disparity,
-                                    imaging::ImageView<const std::uint8_t> reliable, const imaging::StereoRig& rig,
-                                    const NavigationOptions& options, Meter& meter,
-                                    std::pmr::memory_resource* memory) {
+                                    imaging::ImageView<const std::uint8_t> reliable,
+                                    const imaging::StereoRig& rig, const NavigationOptions& options,
+                                    Meter& meter, std::pmr::memory_resource* memory) {
   validate(options.zones);
   validate(options.planner);
   validate(options.drive);
@@ -148,9 +150,10 @@ NavigationResult navigate_disparity(imaging::ImageView<const float> disparity,
 }
 
 template <class Meter>
-NavigationResult navigate(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
-                          const imaging::StereoRig& rig, const NavigationOptions& options, Meter& meter,
-                          std::pmr::memory_resource* memory) {
+NavigationResult navigate(imaging::ImageView<const std::uint8_t> left,
+                          imaging::ImageView<const std::uint8_t> right,
+                          const imaging::StereoRig& rig, const NavigationOptions& options,
+                          Meter& meter, std::pmr::memory_resource* memory) {
   check_images_fit(left, right, rig);
   StereoOptions stereo_options = options.stereo;
   if (stereo_options.max_disparity == 0)
@@ -162,7 +165,8 @@ NavigationResult navigate(imaging::ImageView<const std::uint8_t> left, imaging::
     stereo_options.unseen_columns = unseen;
   }
   StereoResult stereo = match_stereo(left, right, stereo_options, meter, memory);
-  const imaging::Image<float> seeable = seeable_disparity(left, stereo.disparity, rig, options, memory);
+  const imaging::Image<float> seeable =
+      seeable_disparity(left, stereo.disparity, rig, options, memory);
   NavigationResult result = navigate_disparity(seeable, stereo.valid, rig, options, meter, memory);
   const std::string stereo_reason = stereo.reason;
   result.stereo = std::move(stereo);
@@ -172,12 +176,12 @@ NavigationResult navigate(imaging::ImageView<const std::uint8_t> left, imaging::
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template NavigationResult navigate<M>(imaging::ImageView<const std::uint8_t>,                             \
-                                        imaging::ImageView<const std::uint8_t>, const imaging::StereoRig&,           \
-                                        const NavigationOptions&, M&, std::pmr::memory_resource*); \
+  template NavigationResult navigate<M>(                                                           \
+      imaging::ImageView<const std::uint8_t>, imaging::ImageView<const std::uint8_t>,              \
+      const imaging::StereoRig&, const NavigationOptions&, M&, std::pmr::memory_resource*);        \
   template NavigationResult navigate_disparity<M>(                                                 \
-      imaging::ImageView<const float>, imaging::ImageView<const std::uint8_t>, const imaging::StereoRig&,                     \
-      const NavigationOptions&, M&, std::pmr::memory_resource*);
+      imaging::ImageView<const float>, imaging::ImageView<const std::uint8_t>,                     \
+      const imaging::StereoRig&, const NavigationOptions&, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

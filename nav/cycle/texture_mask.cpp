@@ -83,8 +83,8 @@ void mark_textured(SpanRows& spans, int y, int height, int width, int grey_range
 
 } // namespace
 
-imaging::Image<std::uint8_t> textured_pixels(imaging::ImageView<const std::uint8_t> image, int grey_range,
-                                    std::pmr::memory_resource* memory) {
+imaging::Image<std::uint8_t> textured_pixels(imaging::ImageView<const std::uint8_t> image,
+                                             int grey_range, std::pmr::memory_resource* memory) {
   const int width = image.width();
   const int height = image.height();
   imaging::Image<std::uint8_t> textured(width, height, 1, 0, memory);

@@ -2,8 +2,8 @@
 
 #include "marsokhod/nav/features/brightness_features.hpp"
 
-#include "lanes/bit_count.hpp"
 #include "features/census_rows.hpp"
+#include "lanes/bit_count.hpp"
 #include "work/work_report.hpp"
 
 #include <algorithm>
@@ -15,7 +15,8 @@ namespace {
 // Rows of the image with the border repeated, so the transforms need no bounds checks.
 class PaddedRows {
 public:
-  PaddedRows(imaging::ImageView<const std::uint8_t> image, int radius, std::pmr::memory_resource* memory)
+  PaddedRows(imaging::ImageView<const std::uint8_t> image, int radius,
+             std::pmr::memory_resource* memory)
       : image_(image), radius_(radius), width_(image.width() + 2 * radius),
         rows_(static_cast<std::size_t>(width_) * static_cast<std::size_t>(2 * radius + 1), 0,
               memory) {}
@@ -115,8 +116,9 @@ int feature_distance(FeatureKind kind, std::uint32_t a, std::uint32_t b) {
 }
 
 template <class Meter>
-imaging::Image<std::uint32_t> brightness_features(imaging::ImageView<const std::uint8_t> image, FeatureKind kind,
-                                         Meter& meter, std::pmr::memory_resource* memory) {
+imaging::Image<std::uint32_t> brightness_features(imaging::ImageView<const std::uint8_t> image,
+                                                  FeatureKind kind, Meter& meter,
+                                                  std::pmr::memory_resource* memory) {
   imaging::Image<std::uint32_t> features(image.width(), image.height(), 1, 0, memory);
   if (image.empty())
     return features;
@@ -140,8 +142,8 @@ imaging::Image<std::uint32_t> brightness_features(imaging::ImageView<const std::
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template imaging::Image<std::uint32_t> brightness_features<M>(imaging::ImageView<const std::uint8_t>, FeatureKind, \
-                                                       M&, std::pmr::memory_resource*);
+  template imaging::Image<std::uint32_t> brightness_features<M>(                                   \
+      imaging::ImageView<const std::uint8_t>, FeatureKind, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

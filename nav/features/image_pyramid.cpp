@@ -8,7 +8,7 @@ namespace marsokhod::nav {
 
 template <class Meter>
 imaging::Image<std::uint8_t> halve_image(imaging::ImageView<const std::uint8_t> image, Meter& meter,
-                                std::pmr::memory_resource* memory) {
+                                         std::pmr::memory_resource* memory) {
   const int width = image.width() / 2;
   const int height = image.height() / 2;
   imaging::Image<std::uint8_t> half(width, height, 1, 0, memory);
@@ -26,8 +26,8 @@ imaging::Image<std::uint8_t> halve_image(imaging::ImageView<const std::uint8_t> 
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template imaging::Image<std::uint8_t> halve_image<M>(imaging::ImageView<const std::uint8_t>, M&,                   \
-                                              std::pmr::memory_resource*);
+  template imaging::Image<std::uint8_t> halve_image<M>(imaging::ImageView<const std::uint8_t>, M&, \
+                                                       std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

@@ -14,8 +14,8 @@ namespace {
 // The census bytes of every pixel; three padded rows take turns so that each image row is
 // copied once.
 template <class Meter>
-imaging::Image<std::uint8_t> census3x3_bytes(imaging::ImageView<const std::uint8_t> image, Meter& meter,
-                                    std::pmr::memory_resource* memory) {
+imaging::Image<std::uint8_t> census3x3_bytes(imaging::ImageView<const std::uint8_t> image,
+                                             Meter& meter, std::pmr::memory_resource* memory) {
   const int width = image.width();
   const int height = image.height();
   imaging::Image<std::uint8_t> bytes(width, height, 1, 0, memory);
@@ -45,9 +45,10 @@ imaging::Image<std::uint8_t> census3x3_bytes(imaging::ImageView<const std::uint8
 } // namespace
 
 template <class Meter>
-LayerFeatures layer_features(imaging::ImageView<const std::uint8_t> image, FeatureKind kind, Meter& meter,
-                             std::pmr::memory_resource* memory) {
-  LayerFeatures features{kind, imaging::Image<std::uint8_t>(memory), imaging::Image<std::uint32_t>(memory)};
+LayerFeatures layer_features(imaging::ImageView<const std::uint8_t> image, FeatureKind kind,
+                             Meter& meter, std::pmr::memory_resource* memory) {
+  LayerFeatures features{kind, imaging::Image<std::uint8_t>(memory),
+                         imaging::Image<std::uint32_t>(memory)};
   if (kind != FeatureKind::census3x3) {
     features.words = brightness_features(image, kind, meter, memory);
     return features;
@@ -59,8 +60,8 @@ LayerFeatures layer_features(imaging::ImageView<const std::uint8_t> image, Featu
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template LayerFeatures layer_features<M>(imaging::ImageView<const std::uint8_t>, FeatureKind, M&,         \
-                                           std::pmr::memory_resource*);
+  template LayerFeatures layer_features<M>(imaging::ImageView<const std::uint8_t>, FeatureKind,    \
+                                           M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

@@ -3,8 +3,8 @@
 
 // A pyramid layer's brightness features as the stereo matcher reads them (private).
 
-#include "marsokhod/nav/features/brightness_features.hpp"
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/features/brightness_features.hpp"
 
 #include <cstdint>
 #include <memory_resource>
@@ -21,7 +21,7 @@ struct LayerFeatures {
 
 /// The same features as brightness_features(), reported to the meter the same way.
 template <class Meter>
-LayerFeatures layer_features(imaging::ImageView<const std::uint8_t> image, FeatureKind kind, Meter& meter,
-                             std::pmr::memory_resource* memory);
+LayerFeatures layer_features(imaging::ImageView<const std::uint8_t> image, FeatureKind kind,
+                             Meter& meter, std::pmr::memory_resource* memory);
 
 } // namespace marsokhod::nav::detail

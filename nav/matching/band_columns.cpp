@@ -73,8 +73,8 @@ void transpose_block(const std::uint8_t* const* rows, int x, std::uint8_t* out) 
 }
 
 // census3x3: column i is image column first + i, clamped.
-void load_bytes(const imaging::Image<std::uint8_t>& features, int y0, int first, int start, int count,
-                std::uint16_t* data) {
+void load_bytes(const imaging::Image<std::uint8_t>& features, int y0, int first, int start,
+                int count, std::uint16_t* data) {
   const int width = features.width();
   const std::uint8_t* rows[kBandSpan];
   for (int i = 0; i < kBandSpan; ++i)

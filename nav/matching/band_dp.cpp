@@ -2,8 +2,8 @@
 
 #include "matching/band_dp.hpp"
 
-#include "matching/matching_cost.hpp"
 #include "lanes/simd_lanes.hpp"
+#include "matching/matching_cost.hpp"
 
 #include <algorithm>
 

@@ -2,8 +2,8 @@
 
 #include "matching/band_output.hpp"
 
-#include "matching/consistency_lines.hpp"
 #include "lanes/simd_lanes.hpp"
+#include "matching/consistency_lines.hpp"
 
 #include <algorithm>
 #include <limits>

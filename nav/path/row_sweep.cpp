@@ -214,8 +214,8 @@ RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoi
   check_sweep_arguments(terrain, zones, start, first_row);
   const int width = terrain.width();
   RowSweep sweep{imaging::Image<float>(width, terrain.height(), 1, kUnreached, memory),
-                 imaging::Image<std::int8_t>(width, terrain.height(), 1, kNoPredecessor, memory), start,
-                 first_row};
+                 imaging::Image<std::int8_t>(width, terrain.height(), 1, kNoPredecessor, memory),
+                 start, first_row};
   sweep.cost(start.x, start.y) = 0.0F;
   const LaneWeights lane_weights(weights);
   SweepBuffers buffers(width, memory);

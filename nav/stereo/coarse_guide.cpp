@@ -2,8 +2,8 @@
 
 #include "stereo/coarse_guide.hpp"
 
-#include "matching/band_layout.hpp"
 #include "lanes/simd_lanes.hpp"
+#include "matching/band_layout.hpp"
 
 #include <algorithm>
 

@@ -129,32 +129,38 @@ void store_as(float* to, T value) {
 // The columns go by value: through a reference, every store could change them.
 void sort_columns(const float* above, const float* here, const float* below, int width,
                   SortedColumns out) {
-  for_each_lane_group(0, width, [=]<class T>(int x) {
-    const T a = load_as<T>(above + x);
-    const T b = load_as<T>(here + x);
-    const T c = load_as<T>(below + x);
-    const T lower = smaller(a, b);
-    const T upper = larger(a, b);
-    store_as(out.low + x, smaller(lower, c));
-    const T top = larger(lower, c);
-    store_as(out.middle + x, smaller(upper, top));
-    store_as(out.high + x, larger(upper, top));
-  });
+  for_each_lane_group(
+      0, width,
+      [=]<class T>(int x) {
+        const T a = load_as<T>(above + x);
+        const T b = load_as<T>(here + x);
+        const T c = load_as<T>(below + x);
+        const T lower = smaller(a, b);
+        const T upper = larger(a, b);
+        store_as(out.low + x, smaller(lower, c));
+        const T top = larger(lower, c);
+        store_as(out.middle + x, smaller(upper, top));
+        store_as(out.high + x, larger(upper, top));
+      });
 }
 
 // The median of nine from three sorted columns: the median of the largest low, the middle
 // middle and the smallest high (exact: Paeth, Graphics Gems, 1990). Columns x-1, x, x+1 for
 // x in 1 .. width-2.
 void inner_medians(SortedColumns columns, int width, float* out) {
-  for_each_lane_group(1, width - 1, [=]<class T>(int x) {
-    const T low = larger(larger(load_as<T>(columns.low + x - 1), load_as<T>(columns.low + x)),
-                         load_as<T>(columns.low + x + 1));
-    const T high = smaller(smaller(load_as<T>(columns.high + x - 1), load_as<T>(columns.high + x)),
-                           load_as<T>(columns.high + x + 1));
-    const T middle = middle_of(load_as<T>(columns.middle + x - 1), load_as<T>(columns.middle + x),
-                               load_as<T>(columns.middle + x + 1));
-    store_as(out + x, middle_of(low, middle, high));
-  });
+  for_each_lane_group(
+      1, width - 1,
+      [=]<class T>(int x) {
+        const T low = larger(larger(load_as<T>(columns.low + x - 1), load_as<T>(columns.low + x)),
+                             load_as<T>(columns.low + x + 1));
+        const T high =
+            smaller(smaller(load_as<T>(columns.high + x - 1), load_as<T>(columns.high + x)),
+                    load_as<T>(columns.high + x + 1));
+        const T middle =
+            middle_of(load_as<T>(columns.middle + x - 1), load_as<T>(columns.middle + x),
+                      load_as<T>(columns.middle + x + 1));
+        store_as(out + x, middle_of(low, middle, high));
+      });
 }
 
 // The median at a border column, whose missing neighbour repeats the border.
@@ -180,8 +186,9 @@ std::optional<FillPolicy> parse_fill_policy(std::string_view text) {
 }
 
 template <class Meter>
-std::uint64_t fill_disparity(imaging::ImageView<float> disparity, imaging::ImageView<const std::uint8_t> valid,
-                             FillPolicy policy, Meter& meter, std::pmr::memory_resource* memory) {
+std::uint64_t fill_disparity(imaging::ImageView<float> disparity,
+                             imaging::ImageView<const std::uint8_t> valid, FillPolicy policy,
+                             Meter& meter, std::pmr::memory_resource* memory) {
   if (disparity.width() != valid.width() || disparity.height() != valid.height())
     throw std::invalid_argument("fill_disparity: disparity and validity differ in size");
   if (policy == FillPolicy::none || disparity.empty())
@@ -208,8 +215,8 @@ std::uint64_t fill_disparity(imaging::ImageView<float> disparity, imaging::Image
 }
 
 template <class Meter>
-void median3x3(imaging::ImageView<const float> input, imaging::ImageView<float> output, Meter& meter,
-               std::pmr::memory_resource* memory) {
+void median3x3(imaging::ImageView<const float> input, imaging::ImageView<float> output,
+               Meter& meter, std::pmr::memory_resource* memory) {
   if (input.width() != output.width() || input.height() != output.height())
     throw std::invalid_argument("median3x3: input and output differ in size");
   const int width = input.width();
@@ -231,9 +238,10 @@ void median3x3(imaging::ImageView<const float> input, imaging::ImageView<float> 
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template std::uint64_t fill_disparity<M>(imaging::ImageView<float>, imaging::ImageView<const std::uint8_t>,        \
-                                           FillPolicy, M&, std::pmr::memory_resource*);            \
-  template void median3x3<M>(imaging::ImageView<const float>, imaging::ImageView<float>, M&,                         \
+  template std::uint64_t fill_disparity<M>(imaging::ImageView<float>,                              \
+                                           imaging::ImageView<const std::uint8_t>, FillPolicy, M&, \
+                                           std::pmr::memory_resource*);                            \
+  template void median3x3<M>(imaging::ImageView<const float>, imaging::ImageView<float>, M&,       \
                              std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE

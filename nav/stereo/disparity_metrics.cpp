@@ -7,7 +7,8 @@
 
 namespace marsokhod::nav {
 
-BadPixelScore score_bad_pixels(imaging::ImageView<const float> estimate, imaging::ImageView<const float> truth,
+BadPixelScore score_bad_pixels(imaging::ImageView<const float> estimate,
+                               imaging::ImageView<const float> truth,
                                imaging::ImageView<const std::uint8_t> mask, float threshold) {
   if (estimate.width() != truth.width() || estimate.height() != truth.height())
     throw std::invalid_argument("score_bad_pixels: estimate and truth differ in size");

@@ -13,7 +13,7 @@ namespace marsokhod::nav::detail {
 /// Throws std::invalid_argument when the pair cannot be matched with these options: bad
 /// options, empty or multi-channel images, sizes that differ, a search range wider than the
 /// image, an image too small for the pyramid.
-void check_pair(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
-                const StereoOptions& options);
+void check_pair(imaging::ImageView<const std::uint8_t> left,
+                imaging::ImageView<const std::uint8_t> right, const StereoOptions& options);
 
 } // namespace marsokhod::nav::detail

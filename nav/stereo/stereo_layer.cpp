@@ -2,12 +2,12 @@
 
 #include "stereo/stereo_layer.hpp"
 
+#include "lanes/simd_lanes.hpp"
 #include "matching/band_dp.hpp"
 #include "matching/band_layout.hpp"
 #include "matching/band_output.hpp"
 #include "matching/matching_cost.hpp"
 #include "matching/right_view.hpp"
-#include "lanes/simd_lanes.hpp"
 #include "work/work_report.hpp"
 
 #include <algorithm>
@@ -44,8 +44,8 @@ struct BandWorkspace {
 
 // The large-step penalty between pixels x - 1 and x of each line of the band. Blocks of 8
 // columns are transposed into lanes so that 8 lines are compared at once.
-void edge_penalties(imaging::ImageView<const std::uint8_t> image, int y0, const DpPenalties& penalties,
-                    std::pmr::vector<std::uint16_t>& jumps) {
+void edge_penalties(imaging::ImageView<const std::uint8_t> image, int y0,
+                    const DpPenalties& penalties, std::pmr::vector<std::uint16_t>& jumps) {
   const int width = image.width();
   const std::uint8_t* rows[kBandRows];
   for (int lane = 0; lane < kBandRows; ++lane)

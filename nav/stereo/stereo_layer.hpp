@@ -3,9 +3,9 @@
 
 // Matching of one pyramid layer (private to the stereo matcher).
 
+#include "features/layer_features.hpp"
 #include "matching/band_layout.hpp"
 #include "stereo/coarse_guide.hpp"
-#include "features/layer_features.hpp"
 
 #include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/nav/stereo/stereo.hpp"

@@ -1,16 +1,16 @@
 // The stereo matcher: a pyramid of layers matched coarse to fine, then filled.
 
+#include "features/layer_features.hpp"
 #include "matching/band_layout.hpp"
 #include "stereo/coarse_guide.hpp"
-#include "features/layer_features.hpp"
 #include "stereo/stereo_checks.hpp"
 #include "stereo/stereo_layer.hpp"
 #include "work/work_report.hpp"
 
-#include "marsokhod/nav/features/brightness_features.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
-#include "marsokhod/nav/stereo/disparity_fill.hpp"
+#include "marsokhod/nav/features/brightness_features.hpp"
 #include "marsokhod/nav/features/image_pyramid.hpp"
+#include "marsokhod/nav/stereo/disparity_fill.hpp"
 #include "marsokhod/nav/stereo/stereo.hpp"
 
 #include <fmt/format.h>
@@ -58,8 +58,8 @@ std::optional<std::string> uniform_reason(imaging::ImageView<const std::uint8_t>
 class Pyramid {
 public:
   template <class Meter>
-  Pyramid(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right, int levels,
-          Meter& meter, std::pmr::memory_resource* memory)
+  Pyramid(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
+          int levels, Meter& meter, std::pmr::memory_resource* memory)
       : original_{left, right} {
     for (int level = 1; level < levels; ++level) {
       left_[static_cast<std::size_t>(level - 1)] =
@@ -97,7 +97,8 @@ void finish_layer(detail::LayerOutput& layer, FillPolicy fill, bool median, Mete
   fill_disparity(layer.disparity.view(), layer.valid.view(), fill, meter, memory);
   if (!median || fill == FillPolicy::none)
     return;
-  imaging::Image<float> smoothed(layer.disparity.width(), layer.disparity.height(), 1, 0.0F, memory);
+  imaging::Image<float> smoothed(layer.disparity.width(), layer.disparity.height(), 1, 0.0F,
+                                 memory);
   median3x3(layer.disparity.view(), smoothed.view(), meter, memory);
   layer.disparity = std::move(smoothed);
 }
@@ -105,7 +106,8 @@ void finish_layer(detail::LayerOutput& layer, FillPolicy fill, bool median, Mete
 } // namespace
 
 template <class Meter>
-StereoResult match_stereo(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
+StereoResult match_stereo(imaging::ImageView<const std::uint8_t> left,
+                          imaging::ImageView<const std::uint8_t> right,
                           const StereoOptions& options, Meter& meter,
                           std::pmr::memory_resource* memory) {
   detail::check_pair(left, right, options);
@@ -116,11 +118,12 @@ StereoResult match_stereo(imaging::ImageView<const std::uint8_t> left, imaging::
   std::pmr::vector<StereoLayerStats> stats(memory);
   std::optional<detail::LayerOutput> coarser;
   for (int level = levels - 1; level >= 0; --level) {
-    const imaging::ImageView<const std::uint8_t> left_layer = pyramid.layer(level, imaging::Eye::left);
+    const imaging::ImageView<const std::uint8_t> left_layer =
+        pyramid.layer(level, imaging::Eye::left);
     const detail::LayerFeatures left_features =
         detail::layer_features(left_layer, options.feature, meter, memory);
-    const detail::LayerFeatures right_features =
-        detail::layer_features(pyramid.layer(level, imaging::Eye::right), options.feature, meter, memory);
+    const detail::LayerFeatures right_features = detail::layer_features(
+        pyramid.layer(level, imaging::Eye::right), options.feature, meter, memory);
     std::optional<detail::CoarseGuide> guide;
     if (coarser)
       guide.emplace(coarser->disparity.view(), memory);
@@ -160,9 +163,9 @@ StereoResult match_stereo(imaging::ImageView<const std::uint8_t> left, imaging::
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template StereoResult match_stereo<M>(imaging::ImageView<const std::uint8_t>,                             \
-                                        imaging::ImageView<const std::uint8_t>, const StereoOptions&, M&,   \
-                                        std::pmr::memory_resource*);
+  template StereoResult match_stereo<M>(imaging::ImageView<const std::uint8_t>,                    \
+                                        imaging::ImageView<const std::uint8_t>,                    \
+                                        const StereoOptions&, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

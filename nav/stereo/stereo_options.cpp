@@ -66,8 +66,8 @@ int pyramid_levels_for(int width, int height, const StereoOptions& options) {
 namespace detail {
 
 // Throws std::invalid_argument when the pair cannot be matched with these options.
-void check_pair(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
-                const StereoOptions& options) {
+void check_pair(imaging::ImageView<const std::uint8_t> left,
+                imaging::ImageView<const std::uint8_t> right, const StereoOptions& options) {
   validate(options);
   if (left.empty() || right.empty())
     throw std::invalid_argument("stereo: an image is empty");

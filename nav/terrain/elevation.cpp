@@ -172,9 +172,9 @@ private:
 } // namespace
 
 template <class Meter>
-TerrainPoints reconstruct_terrain(imaging::ImageView<const float> disparity, const imaging::StereoRig& rig,
-                                  const imaging::Attitude& attitude, Meter& meter,
-                                  std::pmr::memory_resource* memory) {
+TerrainPoints reconstruct_terrain(imaging::ImageView<const float> disparity,
+                                  const imaging::StereoRig& rig, const imaging::Attitude& attitude,
+                                  Meter& meter, std::pmr::memory_resource* memory) {
   if (disparity.width() != rig.width() || disparity.height() != rig.height() ||
       disparity.channels() != 1)
     throw std::invalid_argument(fmt::format(
@@ -200,8 +200,9 @@ TerrainPoints reconstruct_terrain(imaging::ImageView<const float> disparity, con
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template TerrainPoints reconstruct_terrain<M>(imaging::ImageView<const float>, const imaging::StereoRig&,          \
-                                                const imaging::Attitude&, M&, std::pmr::memory_resource*);
+  template TerrainPoints reconstruct_terrain<M>(                                                   \
+      imaging::ImageView<const float>, const imaging::StereoRig&, const imaging::Attitude&, M&,    \
+      std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

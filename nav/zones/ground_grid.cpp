@@ -18,7 +18,7 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // Channel 0 of a zone map: find_zones' own map already is one.
 imaging::Image<std::uint8_t> first_channel(imaging::ImageView<const std::uint8_t> zone,
-                                  std::pmr::memory_resource* memory) {
+                                           std::pmr::memory_resource* memory) {
   imaging::Image<std::uint8_t> out(zone.width(), zone.height(), 1, 0, memory);
   for (int y = 0; y < zone.height(); ++y)
     for (int x = 0; x < zone.width(); ++x)

@@ -7,8 +7,8 @@
 
 #include "zones/zone_buffer.hpp"
 
-#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -22,8 +22,9 @@ public:
   /// Bins every pixel whose `zone` (channel 0) is not Zone::unknown and that is known and within
   /// `max_range_m`; the grid spans just those points, `cell_m` a side. `work` counts the points
   /// binned.
-  GroundGrid(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> zone, double cell_m,
-             double max_range_m, std::pmr::memory_resource* memory, std::uint64_t& work);
+  GroundGrid(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> zone,
+             double cell_m, double max_range_m, std::pmr::memory_resource* memory,
+             std::uint64_t& work);
 
   int nx() const { return nx_; } ///< cells along the forward axis
   int ny() const { return ny_; } ///< cells along the lateral axis

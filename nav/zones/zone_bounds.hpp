@@ -4,8 +4,8 @@
 // Which pixels the ground grid bins, and how far their points reach (private to
 // ground_grid.cpp): one pass over the terrain, four pixels at a time where SSE2 is there.
 
-#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
 
 #include <algorithm>
 #include <cstdint>

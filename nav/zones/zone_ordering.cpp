@@ -157,7 +157,8 @@ void mark_contradictions(const LongestChain& chain, std::span<const float> range
 } // namespace
 
 std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions& options,
-                                imaging::Image<std::uint8_t>& zone, std::pmr::memory_resource* memory) {
+                                imaging::Image<std::uint8_t>& zone,
+                                std::pmr::memory_resource* memory) {
   if (options.order_tolerance <= 0.0)
     return 0;
   Columns columns(zone.width(), zone.height(), memory);

@@ -41,7 +41,8 @@ bool mark_unknown(const TerrainPoints& terrain, imaging::ImageView<const std::ui
 /// of its column, which a comparison with the next few rows alone would not see. Returns the
 /// comparisons made.
 std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions& options,
-                                imaging::Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);
+                                imaging::Image<std::uint8_t>& zone,
+                                std::pmr::memory_resource* memory);
 
 /// Turns back to Zone::traversable the runs of kUnreliable pixels along a row of the
 /// single-channel `zone` whose two traversable ends are less than bridged_gap_m apart on the
@@ -120,8 +121,8 @@ struct CellRules {
 /// near an obstacle. Pixels that were not binned keep their zone. Returns the step tests made
 /// (two a pixel).
 std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainPoints& terrain,
-                           const CellRules& rules, float step_limit, imaging::Image<std::uint8_t>& zone,
-                           std::pmr::memory_resource* memory);
+                           const CellRules& rules, float step_limit,
+                           imaging::Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);
 
 /// The number of pixels of each zone (channel 0), values beyond the last zone counted as it.
 std::array<std::uint64_t, kZoneKinds> count_zones(const imaging::Image<std::uint8_t>& zone);

@@ -31,8 +31,8 @@ ScratchBuffer<std::uint8_t> cell_verdicts(const CellRules& rules,
 } // namespace
 
 std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainPoints& terrain,
-                           const CellRules& rules, float step_limit, imaging::Image<std::uint8_t>& zone,
-                           std::pmr::memory_resource* memory) {
+                           const CellRules& rules, float step_limit,
+                           imaging::Image<std::uint8_t>& zone, std::pmr::memory_resource* memory) {
   const ScratchBuffer<std::uint8_t> verdicts = cell_verdicts(rules, memory);
   const auto step = static_cast<std::uint8_t>(Zone::step);
   const auto slope = static_cast<std::uint8_t>(Zone::slope);

@@ -128,7 +128,7 @@ void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMa
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template ZoneMap find_zones<M>(const TerrainPoints&, imaging::ImageView<const std::uint8_t>,              \
+  template ZoneMap find_zones<M>(const TerrainPoints&, imaging::ImageView<const std::uint8_t>,     \
                                  const ZoneOptions&, M&, std::pmr::memory_resource*);              \
   template void add_margin<M>(const TerrainPoints&, const ZoneOptions&, ZoneMap&, M&,              \
                               std::pmr::memory_resource*);

@@ -54,8 +54,10 @@ inline imaging::Image<std::uint8_t> random_dots(int width, int height, std::uint
 inline DotPair make_dot_pair(const DotScene& scene) {
   // The texture lives on the surfaces: the background's dots and the square's dots, both in
   // left-image coordinates, wide enough for every right pixel to find its dot.
-  const imaging::Image<std::uint8_t> background = random_dots(scene.width + 64, scene.height, scene.seed);
-  const imaging::Image<std::uint8_t> square = random_dots(scene.width, scene.height, scene.seed + 1);
+  const imaging::Image<std::uint8_t> background =
+      random_dots(scene.width + 64, scene.height, scene.seed);
+  const imaging::Image<std::uint8_t> square =
+      random_dots(scene.width, scene.height, scene.seed + 1);
   DotPair pair{imaging::Image<std::uint8_t>(scene.width, scene.height),
                imaging::Image<std::uint8_t>(scene.width, scene.height),
                imaging::Image<float>(scene.width, scene.height),
@@ -79,7 +81,8 @@ inline DotPair make_dot_pair(const DotScene& scene) {
       const int right_x = x - d;
       // Seen if the right pixel exists and shows this surface (the square hides background).
       const bool exists = right_x >= 0;
-      const bool hidden = !in_square(scene, x, y) && exists && right_x + scene.foreground < scene.width &&
+      const bool hidden = !in_square(scene, x, y) && exists &&
+                          right_x + scene.foreground < scene.width &&
                           in_square(scene, right_x + scene.foreground, y);
       pair.seen(x, y) = exists && !hidden ? 255 : 0;
     }
@@ -87,16 +90,18 @@ inline DotPair make_dot_pair(const DotScene& scene) {
 }
 
 /// a * image + b, rounded and clamped to 0..255.
-inline imaging::Image<std::uint8_t> gain_offset(const imaging::Image<std::uint8_t>& image, double a, double b) {
+inline imaging::Image<std::uint8_t> gain_offset(const imaging::Image<std::uint8_t>& image, double a,
+                                                double b) {
   imaging::Image<std::uint8_t> out(image.width(), image.height());
   for (std::size_t i = 0; i < image.size(); ++i)
-    out.data()[i] = static_cast<std::uint8_t>(
-        std::clamp(std::lround(a * image.data()[i] + b), 0L, 255L));
+    out.data()[i] =
+        static_cast<std::uint8_t>(std::clamp(std::lround(a * image.data()[i] + b), 0L, 255L));
   return out;
 }
 
 /// Share of the pixels with mask != 0 whose estimate lies within `tolerance` of the truth.
-inline double share_within(const imaging::Image<float>& estimate, const imaging::Image<float>& truth,
+inline double share_within(const imaging::Image<float>& estimate,
+                           const imaging::Image<float>& truth,
                            const imaging::Image<std::uint8_t>& mask, float tolerance) {
   long scored = 0;
   long good = 0;

@@ -35,8 +35,9 @@ inline double grid_left(const GridSpec& g, int x) {
 /// Elevation given by `height(forward, left)`; ranges set to match.
 inline TerrainPoints grid_terrain(const GridSpec& g,
                                   const std::function<double(double, double)>& height) {
-  TerrainPoints t{imaging::Image<float>(g.width, g.height), imaging::Image<float>(g.width, g.height),
-                  imaging::Image<float>(g.width, g.height), imaging::Image<float>(g.width, g.height), 0};
+  TerrainPoints t{
+      imaging::Image<float>(g.width, g.height), imaging::Image<float>(g.width, g.height),
+      imaging::Image<float>(g.width, g.height), imaging::Image<float>(g.width, g.height), 0};
   for (int y = 0; y < g.height; ++y) {
     for (int x = 0; x < g.width; ++x) {
       const double forward = grid_forward(g, y);

@@ -75,18 +75,22 @@ Outcome run_mux(Form form) {
     OccamRig rig;
     rig.kernel.set_trace(&writer);
     Chan<int> in0("in0"), in1("in1"), out("out");
-    rig.spawn("fast", [out = in0.out()] {
-      for (int i = 0; i < 4; ++i) {
-        compute(emulator::Instruction::mul, 40); // 1520 cycles, about 51 us
-        out << i;
-      }
-    });
-    rig.spawn("slow", [out = in1.out()] {
-      for (int i = 0; i < 3; ++i) {
-        compute(emulator::Instruction::mul, 150); // about 190 us: the mux times out between
-        out << 100 + i;
-      }
-    });
+    rig.spawn(
+        "fast",
+        [out = in0.out()] {
+          for (int i = 0; i < 4; ++i) {
+            compute(emulator::Instruction::mul, 40); // 1520 cycles, about 51 us
+            out << i;
+          }
+        });
+    rig.spawn(
+        "slow",
+        [out = in1.out()] {
+          for (int i = 0; i < 3; ++i) {
+            compute(emulator::Instruction::mul, 150); // about 190 us: the mux times out between
+            out << 100 + i;
+          }
+        });
     rig.spawn(
         "mux", [&, form] { mux(form, in0, in1, out, 7); }, Priority::high);
     rig.spawn("sink", [&, in = out.in()] {
@@ -115,9 +119,8 @@ TEST(AltFormEquivalence, HandlerAndIndexFormsGiveTheSameSimulatedTimesAndTraces)
   std::vector<int> slow;
   int timeouts = 0;
   for (const int x : handlers.received) {
-    if (x == kEnd) {
+    if (x == kEnd)
       continue;
-    }
     if (x == kTimeout) {
       ++timeouts;
       continue;
@@ -137,7 +140,8 @@ Tick ready_alt_done(Form form) {
   Chan<int> a("a"), b("b");
   Tick done = -1;
   int value = 0;
-  rig.spawn("writer", [&] { a << 7; });
+  rig.spawn(
+      "writer", [&] { a << 7; });
   rig.spawn("alting", [&] {
     if (form == Form::handlers) {
       pri_alt(on_input(b, [&](int x) { value = -x; }), on_input(a, [&](int x) { value = x; }));

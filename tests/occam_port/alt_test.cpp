@@ -21,7 +21,8 @@ TEST(Alt, PriAltTakesTheFirstReadyGuardInTextualOrder) {
   Chan<int> a("a"), b("b");
   std::vector<std::size_t> chosen;
   std::vector<int> values;
-  rig.spawn("writer a", [&] { a << 1; });
+  rig.spawn(
+      "writer a", [&] { a << 1; });
   rig.spawn("writer b", [&] { b << 2; });
   rig.spawn("alting", [&] {
     // Both writers are committed by now: the first guard listed wins, whichever order.
@@ -44,7 +45,8 @@ TEST(Alt, FalsePreconditionHidesAReadyChannel) {
   OccamRig rig;
   Chan<int> a("a"), b("b");
   std::size_t chosen = 99;
-  rig.spawn("writer a", [&] { a << 1; });
+  rig.spawn(
+      "writer a", [&] { a << 1; });
   rig.spawn("writer b", [&] { b << 2; });
   rig.spawn("alting", [&] {
     chosen = pri_alt({when(false, input(a)), input(b)});
@@ -60,15 +62,17 @@ TEST(Alt, SkipIsTakenOnlyWhenNoEarlierGuardIsReady) {
   OccamRig rig;
   Chan<int> a("a");
   std::vector<std::size_t> chosen;
-  rig.spawn("alting", [&] {
-    chosen.push_back(pri_alt({input(a), skip()})); // a has no writer yet
-    Timer tim;
-    tim.wait_after(tim.read()); // the writer runs and commits meanwhile
-    chosen.push_back(pri_alt({input(a), skip()}));
-    int x = 0;
-    a >> x;
-    chosen.push_back(pri_alt({input(a), when(false, skip()), skip()}));
-  });
+  rig.spawn(
+      "alting",
+      [&] {
+        chosen.push_back(pri_alt({input(a), skip()})); // a has no writer yet
+        Timer tim;
+        tim.wait_after(tim.read()); // the writer runs and commits meanwhile
+        chosen.push_back(pri_alt({input(a), skip()}));
+        int x = 0;
+        a >> x;
+        chosen.push_back(pri_alt({input(a), when(false, skip()), skip()}));
+      });
   rig.spawn("writer", [&] { a << 5; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(chosen, (std::vector<std::size_t>{1, 0, 2}));
@@ -165,7 +169,8 @@ TEST(Alt, KillingAWaitingAltLeavesItsChannelsUsable) {
   rig.kernel.run();
   rig.kernel.kill(alting);
   int received = 0;
-  rig.spawn("writer", [&] { a << 3; });
+  rig.spawn(
+      "writer", [&] { a << 3; });
   rig.spawn("reader", [&] { a >> received; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(received, 3);

@@ -49,7 +49,8 @@ TEST(Channel, InputFirstReceivesLaterOutput) {
   OccamRig rig;
   Chan<double> c("c");
   double received = 0;
-  rig.spawn("reader", [&] { c >> received; });
+  rig.spawn(
+      "reader", [&] { c >> received; });
   rig.spawn("writer", [&] { c << 2.5; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(received, 2.5);
@@ -61,11 +62,12 @@ TEST(Channel, MessagesArriveInOrderOneAtATime) {
   OccamRig rig;
   Chan<int> c("c");
   std::vector<int> received;
-  rig.spawn("writer", [&] {
-    for (int i = 0; i < 5; ++i) {
-      c << i * i;
-    }
-  });
+  rig.spawn(
+      "writer",
+      [&] {
+        for (int i = 0; i < 5; ++i)
+          c << i * i;
+      });
   rig.spawn("reader", [&] {
     for (int i = 0; i < 5; ++i) {
       int x = 0;
@@ -96,7 +98,8 @@ TEST(Channel, ReaderWithoutWriterIsReportedAsDeadlocked) {
 TEST(Channel, TwoWritersOnOneChannelAreAnError) {
   OccamRig rig;
   Chan<int> c("shared");
-  rig.spawn("first", [&] { c << 1; });
+  rig.spawn(
+      "first", [&] { c << 1; });
   rig.spawn("second", [&] { c << 2; });
   EXPECT_THROW(rig.kernel.run(), std::logic_error);
 }
@@ -111,7 +114,8 @@ TEST(Channel, KillingAWaitingReaderFreesTheChannel) {
   rig.kernel.run();
   rig.kernel.kill(doomed);
   int received = 0;
-  rig.spawn("writer", [&] { c << 7; });
+  rig.spawn(
+      "writer", [&] { c << 7; });
   rig.spawn("reader", [&] { c >> received; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(received, 7);
@@ -129,7 +133,8 @@ TEST(Channel, EachSidePaysAtTheSpeedOfTheNodeItRunsOn) {
     emulator::Node node(kernel, spec);
     serials.push_back(node.serial());
     int received = 0;
-    node.spawn("writer", [&] { c << 5; });
+    node.spawn(
+        "writer", [&] { c << 5; });
     node.spawn("reader", [&] { c >> received; });
     EXPECT_EQ(kernel.run().reason, StopReason::finished);
     EXPECT_EQ(received, 5);

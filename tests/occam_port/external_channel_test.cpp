@@ -41,7 +41,8 @@ TEST(ExternalChannel, LinkDmaMovesTheBytesSoEachCpuPaysOnlyTheInstructionBase) {
   std::array<std::byte, 4096> sent{};
   sent.fill(std::byte{0x5a});
   std::array<std::byte, 4096> received{};
-  rig.m0.spawn("sender", [&] { c << sent; });
+  rig.m0.spawn(
+      "sender", [&] { c << sent; });
   rig.m1.spawn("receiver", [&] { c >> received; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(received, sent);
@@ -60,10 +61,12 @@ TEST(ExternalChannel, AltOnALinkChannelIsWokenByTheFirstByte) {
   rig.wire(c, rig.m0, rig.m1);
   std::size_t chosen = 99;
   int value = 0;
-  rig.m0.spawn("sender", [&] {
-    compute(emulator::Instruction::mul, 100);
-    c << 1234;
-  });
+  rig.m0.spawn(
+      "sender",
+      [&] {
+        compute(emulator::Instruction::mul, 100);
+        c << 1234;
+      });
   rig.m1.spawn("alting", [&] {
     Timer tim;
     chosen = pri_alt({input(c), after(tim, tim.read() + 1000)});
@@ -121,9 +124,8 @@ TEST(ExternalChannel, PoweringTheServerOffMidExchangeLetsTheClientAltTimeOut) {
   EXPECT_TRUE(server_unwound);
   EXPECT_TRUE(timed_out);
   ASSERT_GE(replies.size(), 1U);
-  for (std::size_t i = 0; i < replies.size(); ++i) {
+  for (std::size_t i = 0; i < replies.size(); ++i)
     EXPECT_EQ(replies[i], 2 * static_cast<int>(i));
-  }
   // The ALT gives up when the low-priority clock passes the deadline (64 us ticks), and not
   // before the power went off.
   EXPECT_GT(timed_out_at, off);

@@ -39,13 +39,13 @@ TEST(GuardedAlt, RunsTheSelectedGuardsHandlerWithTheValueItRead) {
   Chan<int> a("a"), b("b");
   Fired fired;
   std::vector<std::size_t> chosen;
-  rig.spawn("writer a", [&] { a << 1; });
+  rig.spawn(
+      "writer a", [&] { a << 1; });
   rig.spawn("writer b", [&] { b << 2; });
   rig.spawn("alting", [&] {
     // Both writers are committed: b is listed first and wins, then only a is left.
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < 2; ++i)
       chosen.push_back(pri_alt(on_input(b, fired.record("b")), on_input(a, fired.record("a"))));
-    }
   });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(chosen, (std::vector<std::size_t>{0, 1}));
@@ -56,7 +56,8 @@ TEST(GuardedAlt, GuardsOnInputEndsReadThroughThoseEnds) {
   OccamRig rig;
   Chan<int> a("a"), b("b");
   std::vector<int> got;
-  rig.spawn("writer", [out = b.out()] { out << 5; });
+  rig.spawn(
+      "writer", [out = b.out()] { out << 5; });
   rig.spawn("alting", [&, in_a = a.in(), in_b = b.in()] {
     alt(on_input(in_a, [&](int x) { got.push_back(-x); }),
         on_input(in_b, [&](const int& x) { got.push_back(x); }));
@@ -70,7 +71,8 @@ TEST(GuardedAlt, FalsePreconditionExcludesAReadyGuard) {
   Chan<int> a("a"), b("b");
   Fired fired;
   int left_on_a = 0;
-  rig.spawn("writer a", [&] { a << 1; });
+  rig.spawn(
+      "writer a", [&] { a << 1; });
   rig.spawn("writer b", [&] { b << 2; });
   rig.spawn("alting", [&] {
     pri_alt(when(false, on_input(a, fired.record("a"))), on_input(b, fired.record("b")));
@@ -85,7 +87,8 @@ TEST(GuardedAlt, TrueConditionKeepsTheGuard) {
   OccamRig rig;
   Chan<int> a("a");
   Fired fired;
-  rig.spawn("writer", [&] { a << 3; });
+  rig.spawn(
+      "writer", [&] { a << 3; });
   rig.spawn("alting", [&] {
     pri_alt(when(true, on_input(a, fired.record("a"))), on_skip(fired.record_no_value("skip")));
   });
@@ -120,12 +123,15 @@ TEST(GuardedAlt, SkipRunsOnlyWhenNoEarlierGuardIsReady) {
   OccamRig rig;
   Chan<int> a("a");
   Fired fired;
-  rig.spawn("alting", [&] {
-    Timer tim;
-    pri_alt(on_input(a, fired.record("a")), on_skip(fired.record_no_value("skip"))); // no writer
-    tim.wait_after(tim.read()); // the writer runs and commits meanwhile
-    pri_alt(on_input(a, fired.record("a")), on_skip(fired.record_no_value("skip")));
-  });
+  rig.spawn(
+      "alting",
+      [&] {
+        Timer tim;
+        pri_alt(on_input(a, fired.record("a")),
+                on_skip(fired.record_no_value("skip"))); // no writer
+        tim.wait_after(tim.read());                      // the writer runs and commits meanwhile
+        pri_alt(on_input(a, fired.record("a")), on_skip(fired.record_no_value("skip")));
+      });
   rig.spawn("writer", [&] { a << 5; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(fired.calls, (Calls{{"skip", 0}, {"a", 5}}));
@@ -135,15 +141,16 @@ TEST(GuardedAlt, PriAltServesReadyGuardsInTheOrderListed) {
   OccamRig rig;
   Chan<int> a("a"), b("b"), c("c");
   Fired fired;
-  rig.spawn("writer a", [&] { a << 1; });
-  rig.spawn("writer b", [&] { b << 2; });
+  rig.spawn(
+      "writer a", [&] { a << 1; });
+  rig.spawn(
+      "writer b", [&] { b << 2; });
   rig.spawn("writer c", [&] { c << 3; });
   rig.spawn("alting", [&] {
     // All three are committed before the first ALT; each ALT takes the first still ready.
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 3; ++i)
       pri_alt(on_input(c, fired.record("c")), on_input(a, fired.record("a")),
               on_input(b, fired.record("b")), on_skip(fired.record_no_value("skip")));
-    }
     pri_alt(on_input(c, fired.record("c")), on_input(a, fired.record("a")),
             on_input(b, fired.record("b")), on_skip(fired.record_no_value("skip")));
   });

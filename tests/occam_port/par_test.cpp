@@ -46,9 +46,8 @@ TEST(Par, BranchesCommunicateAndNestedParsJoin) {
   rig.spawn("parent", [&] {
     par(
         [&] {
-          for (int i = 1; i <= 4; ++i) {
+          for (int i = 1; i <= 4; ++i)
             c << i;
-          }
         },
         [&] {
           int x = 0;

@@ -24,9 +24,8 @@ using emulator::StopReason;
 
 /// Schedules to run: 10^5, fewer in sanitizer builds; MARSOKHOD_SCHEDULES overrides.
 std::int64_t schedule_count() {
-  if (const char* text = std::getenv("MARSOKHOD_SCHEDULES")) {
+  if (const char* text = std::getenv("MARSOKHOD_SCHEDULES"))
     return std::strtoll(text, nullptr, 10);
-  }
 #if defined(__SANITIZE_ADDRESS__)
   return 10'000;
 #else
@@ -65,9 +64,8 @@ Scenario make_scenario(Dice& dice, std::int64_t index) {
     Sender sender;
     sender.channel = std::make_unique<Chan<int>>(fmt::format("s{}.{}", index, i));
     const auto messages = dice.below(6);
-    for (std::uint64_t m = 0; m < messages; ++m) {
+    for (std::uint64_t m = 0; m < messages; ++m)
       sender.delays.push_back(static_cast<int>(dice.chance(50) ? 0 : dice.below(200)));
-    }
     s.senders.push_back(std::move(sender));
   }
   s.consumer_high = dice.chance(30);
@@ -87,9 +85,8 @@ struct Findings {
 void consume(Scenario& s, Dice& dice, Findings& findings, std::vector<std::vector<int>>& received) {
   Timer tim;
   std::size_t total = 0;
-  for (const Sender& sender : s.senders) {
+  for (const Sender& sender : s.senders)
     total += sender.delays.size();
-  }
   std::size_t got = 0;
   std::vector<Guard> guards;
   while (got < total) {
@@ -100,18 +97,15 @@ void consume(Scenario& s, Dice& dice, Findings& findings, std::vector<std::vecto
       guards.push_back(when(open && !(may_mask && dice.chance(20)), input(*s.senders[i].channel)));
     }
     const std::int32_t deadline = tim.read() + static_cast<std::int32_t>(dice.below(3));
-    if (s.timer_guard) {
+    if (s.timer_guard)
       guards.push_back(after(tim, deadline));
-    }
-    if (s.skip_guard) {
+    if (s.skip_guard)
       guards.push_back(skip());
-    }
     const std::size_t k = pri_alt(guards);
     const std::int32_t clock = tim.read();
     auto ready = [&](const Guard& g) {
-      if (!g.precondition) {
+      if (!g.precondition)
         return false;
-      }
       switch (g.kind) {
       case Guard::Kind::channel:
         return g.channel->ready_for_input();
@@ -123,14 +117,11 @@ void consume(Scenario& s, Dice& dice, Findings& findings, std::vector<std::vecto
       }
       return false;
     };
-    for (std::size_t j = 0; j < k; ++j) {
-      if (guards[j].kind != Guard::Kind::timer && ready(guards[j])) {
+    for (std::size_t j = 0; j < k; ++j)
+      if (guards[j].kind != Guard::Kind::timer && ready(guards[j]))
         ++findings.pri_violations;
-      }
-    }
-    if (!ready(guards[k])) {
+    if (!ready(guards[k]))
       ++findings.unready_selections;
-    }
     if (k >= s.senders.size()) {
       // Timeout or SKIP: pause for a tick or two. High priority is never timesliced, so a
       // high-priority consumer that polls without waiting would starve the senders (as on a
@@ -140,9 +131,8 @@ void consume(Scenario& s, Dice& dice, Findings& findings, std::vector<std::vecto
     }
     int value = -1;
     *s.senders[k].channel >> value;
-    if (value != static_cast<int>(received[k].size())) {
+    if (value != static_cast<int>(received[k].size()))
       ++findings.wrong_messages;
-    }
     received[k].push_back(value);
     ++got;
   }
@@ -168,8 +158,9 @@ TEST(RandomSchedules, NoMessageIsLostOrDuplicatedAndAltsFollowPriority) {
   for (std::int64_t n = 0; n < schedules; ++n) {
     Scenario s = make_scenario(dice, n);
     std::vector<std::vector<int>> received(s.senders.size());
-    node.spawn("consumer", [&] { consume(s, dice, findings, received); },
-               {s.consumer_high ? Priority::high : Priority::low});
+    node.spawn(
+        "consumer", [&] { consume(s, dice, findings, received); },
+        {s.consumer_high ? Priority::high : Priority::low});
     node.spawn("senders",
                [&] {
                  std::vector<std::function<void()>> branches;
@@ -185,9 +176,8 @@ TEST(RandomSchedules, NoMessageIsLostOrDuplicatedAndAltsFollowPriority) {
     for (std::size_t i = 0; i < s.senders.size(); ++i) {
       // Reference model: the channel delivers exactly the sequence 0, 1, ..., n-1.
       std::vector<int> expected(s.senders[i].delays.size());
-      for (std::size_t m = 0; m < expected.size(); ++m) {
+      for (std::size_t m = 0; m < expected.size(); ++m)
         expected[m] = static_cast<int>(m);
-      }
       incomplete += received[i] == expected ? 0 : 1;
       messages += static_cast<std::int64_t>(received[i].size());
     }

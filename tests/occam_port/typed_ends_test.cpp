@@ -68,9 +68,8 @@ constexpr std::int64_t kOperands = 1 + 2 + 1;
 constexpr std::int64_t kOneWordTransfer = kOperands + 2 * 1 + 19;
 
 void producer(ChanOut<int> out, int count) {
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < count; ++i)
     out << 10 * i;
-  }
 }
 
 void consumer(ChanIn<int> in, int count, std::vector<int>& received) {
@@ -107,7 +106,8 @@ TEST(TypedEnds, ProcessesTakingOneEndEachExchangeMessagesInOrder) {
   OccamRig rig;
   Chan<int> c("c");
   std::vector<int> received;
-  rig.spawn("producer", [&] { producer(c, 4); }); // Chan<int>& converts to ChanOut<int>
+  rig.spawn(
+      "producer", [&] { producer(c, 4); }); // Chan<int>& converts to ChanOut<int>
   rig.spawn("consumer", [&] { consumer(c, 4, received); });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(received, (std::vector<int>{0, 10, 20, 30}));
@@ -120,7 +120,8 @@ TEST(TypedEnds, InputsChainAndEndsOfOneChannelCompareEqual) {
   Chan<int> c("c"), d("d");
   int first = 0;
   int second = 0;
-  rig.spawn("writer", [out = c.out()] { out << 1 << 2; });
+  rig.spawn(
+      "writer", [out = c.out()] { out << 1 << 2; });
   rig.spawn("reader", [&, in = c.in()] { in >> first >> second; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(first, 1);
@@ -138,7 +139,8 @@ TEST(TypedEnds, EndsOfAChannelOnALinkCarryTheMessageBetweenModules) {
   rig.wire(c, rig.m0, rig.m1);
   const std::array<int, 4> sent = {7, -7, 70, -70};
   std::array<int, 4> received{};
-  rig.m0.spawn("sender", [&, out = c.out()] { out << sent; });
+  rig.m0.spawn(
+      "sender", [&, out = c.out()] { out << sent; });
   rig.m1.spawn("receiver", [&, in = c.in()] { in >> received; });
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(received, sent);

@@ -63,8 +63,8 @@ imaging::Image<std::uint8_t> transposed(const imaging::Image<std::uint8_t>& imag
 /// `shift` columns (|shift| <= 1) per row. Rows are swept from the sun side; each keeps the
 /// horizon surface H = max(ground, shadow surface), and a row's shadow surface is the previous
 /// row's H, interpolated at the shifted column, lowered by the sun ray's drop over one step.
-imaging::Image<std::uint8_t> sweep_rows(const imaging::Image<float>& z, int toward_sun, double shift,
-                                    double drop) {
+imaging::Image<std::uint8_t> sweep_rows(const imaging::Image<float>& z, int toward_sun,
+                                        double shift, double drop) {
   const int nx = z.width();
   const int ny = z.height();
   imaging::Image<std::uint8_t> lit(nx, ny, 1, 1);

@@ -4,7 +4,8 @@
 
 namespace marsokhod::world {
 
-CameraView::CameraView(const imaging::StereoRig& rig, imaging::Eye eye, const RoverPlacement& placement)
+CameraView::CameraView(const imaging::StereoRig& rig, imaging::Eye eye,
+                       const RoverPlacement& placement)
     : focal_(rig.focal_px()), inv_focal_(1.0 / rig.focal_px()), cx_(rig.cx()), cy_(rig.cy()),
       width_(rig.width()), height_(rig.height()) {
   const Eigen::Isometry3d camera_to_world =

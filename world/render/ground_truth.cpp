@@ -21,8 +21,8 @@ constexpr double kDepthAgreement = 0.0;
 constexpr double kDepthGap = 0.5;
 
 long count_set(const imaging::Image<std::uint8_t>& mask) {
-  return static_cast<long>(std::count_if(mask.data(), mask.data() + mask.size(),
-                                         [](std::uint8_t value) { return value != 0; }));
+  return static_cast<long>(std::count_if(
+      mask.data(), mask.data() + mask.size(), [](std::uint8_t value) { return value != 0; }));
 }
 
 } // namespace

@@ -19,7 +19,8 @@ class GroundTruthRecorder {
 public:
   GroundTruthRecorder(GroundTruth& truth, const Terrain& terrain, const MaxMipmap& mipmap,
                       const CameraView& right, const Eigen::Isometry3d& level_to_world,
-                      double occlusion_tolerance_m, const imaging::Image<float>* right_depth = nullptr);
+                      double occlusion_tolerance_m,
+                      const imaging::Image<float>* right_depth = nullptr);
 
   /// Left pixel (u, v) saw the terrain at this world point.
   void record(int u, int v, const Eigen::Vector3d& hit_world);

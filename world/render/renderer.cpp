@@ -7,8 +7,8 @@
 #include "render/surface_sampler.hpp"
 
 #include "marsokhod/world/render/camera_view.hpp"
-#include "marsokhod/world/terrain/seeded_random.hpp"
 #include "marsokhod/world/render/sensor_noise.hpp"
+#include "marsokhod/world/terrain/seeded_random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -94,27 +94,28 @@ RenderedFrame Renderer::render_with_ground_truth(const imaging::StereoRig& rig,
   // Each camera draws its own noise stream, so the order changes no byte.
   RenderedFrame frame;
   imaging::Image<float> right_depth;
-  frame.images.right =
-      render_eye(rig, imaging::Eye::right, placement, surface, options, nullptr, nullptr, &right_depth);
-  const imaging::Image<float>* depth_hint = options.cast_every_occlusion_ray ? nullptr : &right_depth;
+  frame.images.right = render_eye(rig, imaging::Eye::right, placement, surface, options, nullptr,
+                                  nullptr, &right_depth);
+  const imaging::Image<float>* depth_hint =
+      options.cast_every_occlusion_ray ? nullptr : &right_depth;
   frame.images.left =
       render_eye(rig, imaging::Eye::left, placement, surface, options, &frame.truth, depth_hint);
   return frame;
 }
 
 imaging::Image<std::uint8_t> Renderer::render_view(const imaging::StereoRig& rig, imaging::Eye eye,
-                                               const RoverPlacement& placement,
-                                               const LitSurface& surface,
-                                               const RenderOptions& options) const {
+                                                   const RoverPlacement& placement,
+                                                   const LitSurface& surface,
+                                                   const RenderOptions& options) const {
   return render_eye(rig, eye, placement, surface, options, nullptr);
 }
 
 imaging::Image<std::uint8_t> Renderer::render_eye(const imaging::StereoRig& rig, imaging::Eye eye,
-                                              const RoverPlacement& placement,
-                                              const LitSurface& surface,
-                                              const RenderOptions& options, GroundTruth* truth,
-                                              const imaging::Image<float>* right_depth,
-                                              imaging::Image<float>* depth) const {
+                                                  const RoverPlacement& placement,
+                                                  const LitSurface& surface,
+                                                  const RenderOptions& options, GroundTruth* truth,
+                                                  const imaging::Image<float>* right_depth,
+                                                  imaging::Image<float>* depth) const {
   check_options(options);
   const CameraView camera(rig, eye, placement);
   const CameraView right(rig, imaging::Eye::right, placement);

@@ -44,8 +44,8 @@ void sliding_extreme(const float* in, float* out, int n, int s, float identity, 
 /// The same van Herk / Gil-Werman extreme down the columns, done on strips of whole rows so
 /// that every operation runs along contiguous memory.
 template <class Pick>
-void column_extreme(const imaging::Image<float>& in, imaging::Image<float>& out, int s, float identity,
-                    Pick pick) {
+void column_extreme(const imaging::Image<float>& in, imaging::Image<float>& out, int s,
+                    float identity, Pick pick) {
   constexpr int kStrip = 256;
   const int nx = in.width();
   const int ny = in.height();
@@ -93,7 +93,7 @@ void column_extreme(const imaging::Image<float>& in, imaging::Image<float>& out,
 /// Extreme of the heights over the (2s+1)^2 square window around every node (separable).
 template <class Pick>
 imaging::Image<float> window_extreme(const imaging::Image<float>& heights, int s, float identity,
-                                 Pick pick) {
+                                     Pick pick) {
   const int nx = heights.width();
   const int ny = heights.height();
   imaging::Image<float> along_rows(nx, ny);
@@ -111,8 +111,8 @@ void flag_steps(const HeightField& height, const LocomotionLimits& limits,
   const int s =
       std::max(1, static_cast<int>(std::lround(limits.step_baseline_m / height.cell_m())));
   constexpr float kInfinity = std::numeric_limits<float>::infinity();
-  const imaging::Image<float> highest =
-      window_extreme(height.nodes(), s, -kInfinity, [](float a, float b) { return a > b ? a : b; });
+  const imaging::Image<float> highest = window_extreme(
+      height.nodes(), s, -kInfinity, [](float a, float b) { return a > b ? a : b; });
   const imaging::Image<float> lowest =
       window_extreme(height.nodes(), s, kInfinity, [](float a, float b) { return a < b ? a : b; });
   const auto step = static_cast<float>(limits.max_step_m);
@@ -166,7 +166,8 @@ void validate(const LocomotionLimits& limits) {
     throw std::invalid_argument("LocomotionLimits: max_slope_deg must be in (0, 90)");
 }
 
-imaging::Image<std::uint8_t> obstacle_map(const HeightField& height, const LocomotionLimits& limits) {
+imaging::Image<std::uint8_t> obstacle_map(const HeightField& height,
+                                          const LocomotionLimits& limits) {
   validate(limits);
   imaging::Image<std::uint8_t> flags(height.nx(), height.ny(), 1, 0);
   if (height.nx() < 2 || height.ny() < 2)

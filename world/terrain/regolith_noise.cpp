@@ -51,8 +51,8 @@ AxisTaps axis_taps(double origin, double cell, int nodes, double inv_wavelength)
 
 } // namespace
 
-void add_value_noise(imaging::Image<float>& field, const GridFrame& frame, const NoiseOctave& octave,
-                     std::uint64_t seed) {
+void add_value_noise(imaging::Image<float>& field, const GridFrame& frame,
+                     const NoiseOctave& octave, std::uint64_t seed) {
   if (!(octave.wavelength_m > 0.0) || !std::isfinite(octave.wavelength_m))
     throw std::invalid_argument("add_value_noise: wavelength must be positive");
   const double inv_wavelength = 1.0 / octave.wavelength_m;

@@ -183,7 +183,8 @@ std::vector<Rock> sample_rocks(const RockField& field, std::uint64_t seed) {
   return rocks;
 }
 
-void place_rocks(const std::vector<Rock>& rocks, HeightField& height, imaging::Image<float>& albedo) {
+void place_rocks(const std::vector<Rock>& rocks, HeightField& height,
+                 imaging::Image<float>& albedo) {
   if (albedo.width() != height.nx() || albedo.height() != height.ny())
     throw std::invalid_argument("place_rocks: albedo and height grids differ in size");
   imaging::Image<float> rock_height(height.nx(), height.ny(), 1, 0.0f);

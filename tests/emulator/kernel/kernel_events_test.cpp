@@ -53,8 +53,8 @@ TEST(KernelEvents, RunUntilStopsAtTheLimitAndResumesLater) {
   Kernel kernel;
   std::vector<Tick> seen;
   for (Tick t : {100, 200, 300}) {
-    kernel.schedule_at(t, event_priority::normal,
-                       [&seen, &kernel] { seen.push_back(kernel.now()); });
+    kernel.schedule_at(
+        t, event_priority::normal, [&seen, &kernel] { seen.push_back(kernel.now()); });
   }
   RunResult first = kernel.run_until(200);
   EXPECT_EQ(first.reason, StopReason::time_limit);
@@ -84,10 +84,12 @@ TEST(KernelEvents, BackgroundEventsDoNotKeepTheRunAlive) {
 TEST(KernelEvents, StopReturnsAfterTheCurrentEvent) {
   Kernel kernel;
   int fired = 0;
-  kernel.schedule_at(1, event_priority::normal, [&] {
-    ++fired;
-    kernel.stop();
-  });
+  kernel.schedule_at(
+      1, event_priority::normal,
+      [&] {
+        ++fired;
+        kernel.stop();
+      });
   kernel.schedule_at(2, event_priority::normal, [&] { ++fired; });
   EXPECT_EQ(kernel.run().reason, StopReason::stopped);
   EXPECT_EQ(fired, 1);

@@ -28,10 +28,12 @@ TEST(KernelProcess, ProcessesOnOneCpuShareItInTurn) {
   Cpu& cpu = kernel.add_cpu("node0");
   std::vector<Tick> ends;
   for (int i = 0; i < 2; ++i) {
-    kernel.spawn(cpu, "worker", [&] {
-      kernel.consume(microseconds(3));
-      ends.push_back(kernel.now());
-    });
+    kernel.spawn(
+        cpu, "worker",
+        [&] {
+          kernel.consume(microseconds(3));
+          ends.push_back(kernel.now());
+        });
   }
   EXPECT_EQ(kernel.run().reason, StopReason::finished);
   // One processor: the second starts when the first has finished.
@@ -63,10 +65,12 @@ TEST(KernelProcess, BlockedProcessResumesWhenWoken) {
   Cpu& cpu = kernel.add_cpu("node0");
   NamedTarget gate("gate");
   Tick resumed_at = -1;
-  Process& waiter = kernel.spawn(cpu, "waiter", [&] {
-    kernel.block(WaitInfo{WaitKind::other, &gate});
-    resumed_at = kernel.now();
-  });
+  Process& waiter = kernel.spawn(
+      cpu, "waiter",
+      [&] {
+        kernel.block(WaitInfo{WaitKind::other, &gate});
+        resumed_at = kernel.now();
+      });
   kernel.schedule_at(microseconds(7), event_priority::normal, [&] { kernel.wake(waiter); });
   EXPECT_EQ(kernel.run().reason, StopReason::finished);
   EXPECT_EQ(resumed_at, microseconds(7));
@@ -76,12 +80,15 @@ TEST(KernelProcess, BlockUntilReportsWhetherTheDeadlineWokeIt) {
   Kernel kernel;
   Cpu& cpu = kernel.add_cpu("node0");
   std::vector<std::pair<bool, Tick>> outcomes;
-  Process& p = kernel.spawn(cpu, "p", [&] {
-    const bool first = kernel.block_until(microseconds(10), WaitInfo{WaitKind::timer, nullptr});
-    outcomes.emplace_back(first, kernel.now());
-    const bool second = kernel.block_until(microseconds(20), WaitInfo{WaitKind::timer, nullptr});
-    outcomes.emplace_back(second, kernel.now());
-  });
+  Process& p = kernel.spawn(
+      cpu, "p",
+      [&] {
+        const bool first = kernel.block_until(microseconds(10), WaitInfo{WaitKind::timer, nullptr});
+        outcomes.emplace_back(first, kernel.now());
+        const bool second =
+            kernel.block_until(microseconds(20), WaitInfo{WaitKind::timer, nullptr});
+        outcomes.emplace_back(second, kernel.now());
+      });
   kernel.schedule_at(microseconds(4), event_priority::normal, [&] { kernel.wake(p); });
   EXPECT_EQ(kernel.run().reason, StopReason::finished);
   ASSERT_EQ(outcomes.size(), 2U);
@@ -94,10 +101,12 @@ TEST(KernelProcess, DeadlockReportNamesEveryBlockedProcessAndWhatItWaitsOn) {
   Cpu& cpu = kernel.add_cpu("node3");
   NamedTarget c("channel c");
   NamedTarget d("channel d");
-  kernel.spawn(cpu, "producer", [&] {
-    kernel.consume(microseconds(1));
-    kernel.block(WaitInfo{WaitKind::channel_output, &c});
-  });
+  kernel.spawn(
+      cpu, "producer",
+      [&] {
+        kernel.consume(microseconds(1));
+        kernel.block(WaitInfo{WaitKind::channel_output, &c});
+      });
   kernel.spawn(cpu, "consumer", [&] { kernel.block(WaitInfo{WaitKind::channel_input, &d}); });
   const RunResult result = kernel.run();
   ASSERT_EQ(result.reason, StopReason::deadlock);
@@ -170,10 +179,12 @@ TEST(KernelProcess, PowerOffKillsEveryProcessOfTheCpuIncludingOneMidCompute) {
     kernel.consume(milliseconds(5));
   });
   bool survivor_done = false;
-  kernel.spawn(other, "survivor", [&] {
-    kernel.consume(milliseconds(2));
-    survivor_done = true;
-  });
+  kernel.spawn(
+      other, "survivor",
+      [&] {
+        kernel.consume(milliseconds(2));
+        survivor_done = true;
+      });
   kernel.schedule_at(milliseconds(1), event_priority::power, [&] { kernel.kill_all(cpu); });
   EXPECT_EQ(kernel.run().reason, StopReason::finished);
   EXPECT_EQ(destroyed, 2);
@@ -191,10 +202,12 @@ TEST(KernelProcess, DestroyingTheKernelUnwindsLiveProcesses) {
     };
     Kernel kernel;
     Cpu& cpu = kernel.add_cpu("node0");
-    kernel.spawn(cpu, "forever", [&] {
-      Flag flag{&destroyed};
-      kernel.block(WaitInfo{});
-    });
+    kernel.spawn(
+        cpu, "forever",
+        [&] {
+          Flag flag{&destroyed};
+          kernel.block(WaitInfo{});
+        });
     kernel.spawn(cpu, "never started", [&] { Flag flag{&destroyed}; });
     kernel.run_until(0);
   }
@@ -245,12 +258,14 @@ TEST(KernelProcess, LowPriorityIsDescheduledAfterTwoTimesliceTicks) {
   Cpu& cpu = kernel.add_cpu("node0", timing);
   std::vector<std::string> log;
   for (std::string name : {"a", "b"}) {
-    kernel.spawn(cpu, name, [&, name] {
-      for (int chunk = 0; chunk < 6; ++chunk) {
-        kernel.consume(microseconds(60));
-        log.push_back(fmt::format("{}{}", name, chunk));
-      }
-    });
+    kernel.spawn(
+        cpu, name,
+        [&, name] {
+          for (int chunk = 0; chunk < 6; ++chunk) {
+            kernel.consume(microseconds(60));
+            log.push_back(fmt::format("{}{}", name, chunk));
+          }
+        });
   }
   kernel.run();
   // a runs chunks ending at 60, 120, 180, 240: at the boundary at 240 us it has seen the ticks
@@ -267,10 +282,12 @@ TEST(KernelProcess, TenThousandProcessesCanLiveAtOnce) {
   Cpu& cpu = kernel.add_cpu("node0");
   int finished = 0;
   for (int i = 0; i < 10'000; ++i) {
-    kernel.spawn(cpu, fmt::format("p{}", i), [&, i] {
-      kernel.consume(nanoseconds(i % 7 + 1));
-      ++finished;
-    });
+    kernel.spawn(
+        cpu, fmt::format("p{}", i),
+        [&, i] {
+          kernel.consume(nanoseconds(i % 7 + 1));
+          ++finished;
+        });
   }
   EXPECT_EQ(kernel.live_processes(), 10'000U);
   EXPECT_EQ(kernel.run().reason, StopReason::finished);

@@ -48,12 +48,14 @@ TEST(KernelShortcut, TimesliceEndsAtTheFirstBoundaryAfterTwoTicksInSmallChunks) 
   std::vector<Tick> a_ends;
   std::vector<Tick> b_ends;
   for (auto* ends : {&a_ends, &b_ends}) {
-    kernel.spawn(cpu, "worker", [&kernel, ends] {
-      for (int chunk = 0; chunk < 300; ++chunk) {
-        kernel.consume(microseconds(1));
-        ends->push_back(kernel.now());
-      }
-    });
+    kernel.spawn(
+        cpu, "worker",
+        [&kernel, ends] {
+          for (int chunk = 0; chunk < 300; ++chunk) {
+            kernel.consume(microseconds(1));
+            ends->push_back(kernel.now());
+          }
+        });
   }
   EXPECT_EQ(kernel.run().reason, StopReason::finished);
   // a is granted at 0 and sees the ticks at 100 and 200 us: descheduled at the boundary at
@@ -75,15 +77,18 @@ TEST(KernelShortcut, EventsScheduledByTheProcessInterruptItsChunks) {
   Cpu& cpu = kernel.add_cpu("node0");
   int chunks = 0;
   std::vector<int> seen;
-  kernel.spawn(cpu, "worker", [&] {
-    // An event before the end of the next chunk: that chunk must end through the queue, so
-    // that the event sees the work done before it and none after.
-    kernel.schedule_at(nanoseconds(2'500), event_priority::normal, [&] { seen.push_back(chunks); });
-    for (int i = 0; i < 5; ++i) {
-      kernel.consume(microseconds(1));
-      ++chunks;
-    }
-  });
+  kernel.spawn(
+      cpu, "worker",
+      [&] {
+        // An event before the end of the next chunk: that chunk must end through the queue, so
+        // that the event sees the work done before it and none after.
+        kernel.schedule_at(
+            nanoseconds(2'500), event_priority::normal, [&] { seen.push_back(chunks); });
+        for (int i = 0; i < 5; ++i) {
+          kernel.consume(microseconds(1));
+          ++chunks;
+        }
+      });
   kernel.schedule_at(nanoseconds(3'500), event_priority::normal, [&] { seen.push_back(chunks); });
   EXPECT_EQ(kernel.run().reason, StopReason::finished);
   EXPECT_EQ(seen, (std::vector<int>{2, 3}));
@@ -95,16 +100,17 @@ TEST(KernelShortcut, BusyTimeCountsEveryProcessOfAnUnbrokenRun) {
   Cpu& cpu = kernel.add_cpu("node0");
   std::vector<Process*> ring;
   for (int i = 0; i < 3; ++i) {
-    ring.push_back(&kernel.spawn(cpu, "p", [&kernel, &ring, i] {
-      for (int round = 0; round < 4; ++round) {
-        kernel.consume(microseconds(1));
-        // Wake the next one and wait: the CPU passes straight from one process to another.
-        kernel.wake(*ring[static_cast<std::size_t>((i + 1) % 3)]);
-        if (round < 3) {
-          kernel.block(WaitInfo{});
-        }
-      }
-    }));
+    ring.push_back(&kernel.spawn(
+        cpu, "p",
+        [&kernel, &ring, i] {
+          for (int round = 0; round < 4; ++round) {
+            kernel.consume(microseconds(1));
+            // Wake the next one and wait: the CPU passes straight from one process to another.
+            kernel.wake(*ring[static_cast<std::size_t>((i + 1) % 3)]);
+            if (round < 3)
+              kernel.block(WaitInfo{});
+          }
+        }));
   }
   EXPECT_EQ(kernel.run().reason, StopReason::finished);
   EXPECT_EQ(kernel.now(), microseconds(12));

@@ -84,10 +84,12 @@ TEST_F(TwoNodes, LinkTransferOverlapsComputationOnTheSameNode) {
   std::vector<std::byte> received(100);
   Tick compute_done = 0;
   kernel.spawn(a, "sender", [&] { link.port(0).output(sent); });
-  kernel.spawn(a, "worker", [&] {
-    kernel.consume(microseconds(80));
-    compute_done = kernel.now();
-  });
+  kernel.spawn(
+      a, "worker",
+      [&] {
+        kernel.consume(microseconds(80));
+        compute_done = kernel.now();
+      });
   kernel.spawn(b, "receiver", [&] { link.port(1).input(received); });
   kernel.run();
   // The 110 us transfer runs on the link engine; the worker gets the CPU for its 80 us at once.
@@ -110,10 +112,12 @@ TEST_F(TwoNodes, PoweredOffPeerStopsTrafficAndItsPeersTimedWaitExpires) {
   std::vector<std::byte> received(1000);
   bool sender_finished = false;
   bool timed_out = false;
-  kernel.spawn(a, "sender", [&] {
-    link.port(0).output(sent);
-    sender_finished = true;
-  });
+  kernel.spawn(
+      a, "sender",
+      [&] {
+        link.port(0).output(sent);
+        sender_finished = true;
+      });
   kernel.spawn(b, "receiver", [&] { link.port(1).input(received); });
   // Node a also waits for a reply from b with a 200 us timeout, as an ALT with AFTER would.
   Link reply{kernel, "a.link1", "b.link1", hand_timing()};
@@ -145,7 +149,8 @@ TEST_F(TwoNodes, BrokenCableCarriesNothing) {
   link.set_broken(true);
   const std::vector<std::byte> sent = pattern(4);
   std::vector<std::byte> received(4, std::byte{0});
-  kernel.spawn(a, "sender", [&] { link.port(0).output(sent); });
+  kernel.spawn(
+      a, "sender", [&] { link.port(0).output(sent); });
   kernel.spawn(b, "receiver", [&] { link.port(1).input(received); });
   const RunResult result = kernel.run();
   EXPECT_EQ(result.reason, StopReason::deadlock);
@@ -155,17 +160,21 @@ TEST_F(TwoNodes, BrokenCableCarriesNothing) {
 TEST_F(TwoNodes, LinkWorksAgainAfterThePeerIsPoweredBackOn) {
   const std::vector<std::byte> sent = pattern(20);
   std::vector<std::byte> received(20);
-  kernel.spawn(b, "doomed", [&] {
-    std::vector<std::byte> sink(20);
-    link.port(1).input(sink);
-  });
+  kernel.spawn(
+      b, "doomed",
+      [&] {
+        std::vector<std::byte> sink(20);
+        link.port(1).input(sink);
+      });
   kernel.spawn(a, "first", [&] { link.port(0).output(sent); });
-  kernel.schedule_at(microseconds(5), event_priority::power, [&] {
-    kernel.kill_all(b);
-    link.set_powered(1, false);
-    kernel.kill_all(a);
-    link.set_powered(0, false);
-  });
+  kernel.schedule_at(
+      microseconds(5), event_priority::power,
+      [&] {
+        kernel.kill_all(b);
+        link.set_powered(1, false);
+        kernel.kill_all(a);
+        link.set_powered(0, false);
+      });
   kernel.schedule_at(microseconds(10), event_priority::power, [&] {
     link.set_powered(0, true);
     link.set_powered(1, true);
@@ -183,9 +192,12 @@ TEST_F(TwoNodes, BothDirectionsAtOnceDeliverEverything) {
             reinterpret_cast<unsigned char*>(ba.data()) + ba.size(), static_cast<unsigned char>(1));
   std::vector<std::byte> at_b(300);
   std::vector<std::byte> at_a(300);
-  kernel.spawn(a, "a_out", [&] { link.port(0).output(ab); });
-  kernel.spawn(a, "a_in", [&] { link.port(0).input(at_a); });
-  kernel.spawn(b, "b_out", [&] { link.port(1).output(ba); });
+  kernel.spawn(
+      a, "a_out", [&] { link.port(0).output(ab); });
+  kernel.spawn(
+      a, "a_in", [&] { link.port(0).input(at_a); });
+  kernel.spawn(
+      b, "b_out", [&] { link.port(1).output(ba); });
   kernel.spawn(b, "b_in", [&] { link.port(1).input(at_b); });
   EXPECT_EQ(kernel.run().reason, StopReason::finished);
   EXPECT_EQ(at_b, ab);
@@ -206,7 +218,8 @@ TEST(LinkNetwork, OnboardModulesTalkOnlyWhenPowered) {
   const std::vector<std::byte> sent = pattern(64);
   std::vector<std::byte> received(64);
   bool to_spare_done = false;
-  kernel.spawn(m0, "to_m1", [&] { network.require_port("module0", 0).output(sent); });
+  kernel.spawn(
+      m0, "to_m1", [&] { network.require_port("module0", 0).output(sent); });
   kernel.spawn(m1, "from_m0", [&] { network.require_port("module1", 0).input(received); });
   // module2 is a cold spare (onboard.toml): nothing sent to it is acknowledged.
   kernel.spawn(m0, "to_spare", [&] {
@@ -238,11 +251,14 @@ TEST(LinkNetwork, NodePowerSwitchReachesItsLinks) {
   const std::vector<std::byte> sent = pattern(1000);
   std::vector<std::byte> received(1000);
   bool delivered = false;
-  m0.spawn("sender", [&] {
-    m0.link(0)->output(sent);
-    delivered = true;
-  });
-  m1.spawn("receiver", [&] { m1.link(0)->input(received); });
+  m0.spawn(
+      "sender",
+      [&] {
+        m0.link(0)->output(sent);
+        delivered = true;
+      });
+  m1.spawn(
+      "receiver", [&] { m1.link(0)->input(received); });
   kernel.schedule_at(microseconds(100), event_priority::power, [&] { m1.power_off(); });
   kernel.run();
   EXPECT_FALSE(delivered);

@@ -1,8 +1,8 @@
 // A node's memory: the address map, allocation, faults and trace counters.
 
-#include "marsokhod/emulator/trace/chrome_trace.hpp"
 #include "marsokhod/emulator/memory/memory_arena.hpp"
 #include "marsokhod/emulator/memory/memory_arena_hooks.hpp"
+#include "marsokhod/emulator/trace/chrome_trace.hpp"
 
 #include <gtest/gtest.h>
 
@@ -236,7 +236,8 @@ TEST(MemoryArenaInKernel, AllocationsAreChargedToTheRunningProcess) {
   Cpu& cpu = kernel.add_cpu("node0");
   MemoryArena arena(small_node(4096));
   attach_memory(arena, kernel, "node0");
-  kernel.spawn(cpu, "stereo", [&] { std::pmr::vector<int> row(64, 0, &arena); });
+  kernel.spawn(
+      cpu, "stereo", [&] { std::pmr::vector<int> row(64, 0, &arena); });
   kernel.spawn(cpu, "planner", [&] { std::pmr::vector<int> path(16, 0, &arena); });
   kernel.run();
   const auto owners = arena.owners();

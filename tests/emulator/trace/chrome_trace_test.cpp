@@ -1,8 +1,8 @@
 // Chrome Trace Event JSON output: slices, counters, instants and flows.
 
-#include "marsokhod/emulator/trace/chrome_trace.hpp"
 #include "marsokhod/emulator/kernel/kernel.hpp"
 #include "marsokhod/emulator/links/link.hpp"
+#include "marsokhod/emulator/trace/chrome_trace.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -145,7 +145,8 @@ TEST(ChromeTrace, LinkRunTraceIsValidJsonWithBalancedSlicesPerTrack) {
       transfers += names[track] == "link0 out" ? 1 : 0;
     }
     if (event["ph"] == "E") {
-      EXPECT_GE(--open[track], 0);
+      --open[track];
+      EXPECT_GE(open[track], 0);
     }
   }
   for (const auto& [track, count] : open)

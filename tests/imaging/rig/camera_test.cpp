@@ -266,9 +266,9 @@ TEST(StereoRig, RollTurnsTheHorizonLineByTheRollAngle) {
       const double angle = std::atan2(b->y() - a->y(), b->x() - a->x());
       const double expected = -std::atan(std::tan(rad(roll)) / std::cos(rad(pitch_down)));
       EXPECT_NEAR(angle, expected, 1e-9);
-      if (pitch_down == 0.0) {
-        EXPECT_NEAR(angle, -rad(roll), 1e-9);
-      }
+      if (pitch_down != 0.0)
+        continue;
+      EXPECT_NEAR(angle, -rad(roll), 1e-9);
     }
   }
 }

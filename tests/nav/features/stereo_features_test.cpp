@@ -1,9 +1,10 @@
 // Tests: brightness features (census, rank) and the image pyramid's halving.
 // Brightness features: unchanged by gain and offset differences between the cameras, and the
 // census bits as defined (worked out by hand on small patches).
+#include "nav/stereo_test_support.hpp"
+
 #include "marsokhod/nav/features/brightness_features.hpp"
 #include "marsokhod/nav/features/image_pyramid.hpp"
-#include "nav/stereo_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +25,8 @@ TEST(BrightnessFeatures, Census3x3SetsOneBitPerDarkerNeighbourInRasterOrder) {
   // Centre 50; neighbours in raster order 10, 90, 50, 20, (centre), 60, 40, 50, 99:
   // darker are 10, 20, 40 -> bits 1 0 0 1 0 1 0 0 (first neighbour most significant).
   const imaging::Image<std::uint8_t> image = patch(3, 3, {10, 90, 50, 20, 50, 60, 40, 50, 99});
-  const imaging::Image<std::uint32_t> census = brightness_features(image.view(), FeatureKind::census3x3);
+  const imaging::Image<std::uint32_t> census =
+      brightness_features(image.view(), FeatureKind::census3x3);
   EXPECT_EQ(census(1, 1), 0b10010100U);
 }
 
@@ -32,7 +34,8 @@ TEST(BrightnessFeatures, BordersRepeatTheNearestPixel) {
   // Image 50 10 / 90 30. Around the top-left pixel, outside positions repeat the nearest
   // pixel: in raster order 50 50 10 | 50 (c) 10 | 90 90 30 -> darker than 50: 0 0 1 0 1 0 0 1.
   const imaging::Image<std::uint8_t> image = patch(2, 2, {50, 10, 90, 30});
-  const imaging::Image<std::uint32_t> census = brightness_features(image.view(), FeatureKind::census3x3);
+  const imaging::Image<std::uint32_t> census =
+      brightness_features(image.view(), FeatureKind::census3x3);
   EXPECT_EQ(census(0, 0), 0b00101001U);
 }
 
@@ -42,7 +45,8 @@ TEST(BrightnessFeatures, RankCountsTheDarkerPixelsOfTheFiveByFiveWindow) {
   for (int i = 0; i < 25; ++i)
     image.data()[i] = static_cast<std::uint8_t>(i * 10);
   EXPECT_EQ(brightness_features(image.view(), FeatureKind::rank5x5)(2, 2), 12U);
-  const imaging::Image<std::uint32_t> census = brightness_features(image.view(), FeatureKind::census5x5);
+  const imaging::Image<std::uint32_t> census =
+      brightness_features(image.view(), FeatureKind::census5x5);
   // The 12 pixels before the centre are darker: the 12 most significant of 24 bits.
   EXPECT_EQ(census(2, 2), 0xFFF000U);
 }

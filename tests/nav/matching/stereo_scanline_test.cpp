@@ -1,10 +1,10 @@
 // The scan-line dynamic programme, the left-right check and the fill policy on hand-made lines.
 #include "nav/stereo_test_support.hpp"
 
+#include "marsokhod/nav/matching/scanline_dp.hpp"
 #include "marsokhod/nav/stereo/consistency_check.hpp"
 #include "marsokhod/nav/stereo/disparity_fill.hpp"
 #include "marsokhod/nav/stereo/disparity_metrics.hpp"
-#include "marsokhod/nav/matching/scanline_dp.hpp"
 
 #include <gtest/gtest.h>
 

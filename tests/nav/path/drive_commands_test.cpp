@@ -39,7 +39,7 @@ TEST(SimplifyPolyline, DropsWigglesWithinTheToleranceAndKeepsLargerOnes) {
   for (int i = 0; i <= 100; ++i) {
     const double x = 3.0 + 0.1 * i;
     const double wiggle = (i % 2 == 0 ? 1.0 : -1.0);
-    small.push_back({x, 0.06 * wiggle}); // 0.12 m from the chord at most
+    small.push_back({x, 0.06 * wiggle});                          // 0.12 m from the chord at most
     large.push_back({x, 0.40 * (1.0 - std::abs(i - 50) / 50.0)}); // a tent 0.40 m high
   }
   EXPECT_EQ(simplify_polyline(small, 0.15).size(), 2U);

@@ -44,7 +44,8 @@ void prohibit_rows(ZoneMap& zones, int from, int to, ZoneOfColumn zone_of) {
       prohibit(zones, x, y, zone_of(x));
 }
 void prohibit_rows(ZoneMap& zones, int from, int to, Zone zone) {
-  prohibit_rows(zones, from, to, [zone](int) { return zone; });
+  prohibit_rows(
+      zones, from, to, [zone](int) { return zone; });
 }
 
 // The documented edge weight, written out again:

@@ -1,6 +1,7 @@
 // The whole matcher on random-dot stereograms whose disparity is known exactly.
-#include "marsokhod/nav/stereo/stereo.hpp"
 #include "nav/stereo_test_support.hpp"
+
+#include "marsokhod/nav/stereo/stereo.hpp"
 
 #include <gtest/gtest.h>
 
@@ -106,7 +107,8 @@ TEST(StereoMatcher, TheGroundPriorBoundsTheSearchOfRowsAboveNearerGround) {
   options.max_disparity = 40;
   options.ground_prior = false;
   CountingMeter without;
-  const StereoResult free_search = match_stereo(pair.left.view(), pair.right.view(), options, without);
+  const StereoResult free_search =
+      match_stereo(pair.left.view(), pair.right.view(), options, without);
   options.ground_prior = true;
   CountingMeter with;
   const StereoResult bounded = match_stereo(pair.left.view(), pair.right.view(), options, with);

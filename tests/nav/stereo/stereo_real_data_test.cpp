@@ -2,8 +2,8 @@
 // The acceptance figures on the real pairs of MARSOKHOD_SHARED_DATA/stereo: bad-1.0 below
 // OpenCV StereoBM on every pair and a mean no higher than StereoSGBM's. The peer figures and
 // the ground-truth scales are those of the data's README (measured outside this project).
-#include "marsokhod/nav/stereo/disparity_metrics.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/nav/stereo/disparity_metrics.hpp"
 #include "marsokhod/nav/stereo/stereo.hpp"
 
 #include <gtest/gtest.h>

@@ -42,7 +42,8 @@ double hand_ground_disparity(double f, double y_from_centre) {
 }
 
 imaging::Image<float> ground_disparity_map(const imaging::StereoRig& rig) {
-  imaging::Image<float> disparity(rig.width(), rig.height(), 1, std::numeric_limits<float>::infinity());
+  imaging::Image<float> disparity(rig.width(), rig.height(), 1,
+                                  std::numeric_limits<float>::infinity());
   for (int v = 0; v < rig.height(); ++v) {
     const double d = hand_ground_disparity(rig.focal_px(), v - rig.cy());
     for (int u = 0; u < rig.width(); ++u)

@@ -1,7 +1,7 @@
 // Tests: the level-ground view: seeable pixels, columns past the edge, ground disparity.
 
-#include "terrain/terrain_view.hpp"
 #include "nav/portable_random.hpp"
+#include "terrain/terrain_view.hpp"
 
 #include <gtest/gtest.h>
 

@@ -222,12 +222,11 @@ TEST(AddMargin, IsTheRoverHalfWidthOnTheGroundWhateverThePerspective) {
                                                        t.left(x, y) - t.left(p.x, p.y)));
       if (zones.at(x, y) == Zone::step)
         continue;
-      if (nearest < 0.5 - 0.15) {
-        ASSERT_EQ(zones.at(x, y), Zone::margin) << x << "," << y;
-      }
-      if (nearest > 0.5 + 0.15) {
-        ASSERT_EQ(zones.at(x, y), Zone::traversable) << x << "," << y;
-      }
+      // Well inside the half-width: margin; well outside it: traversable.
+      const Zone expected = nearest < 0.5 - 0.15   ? Zone::margin
+                            : nearest > 0.5 + 0.15 ? Zone::traversable
+                                                   : zones.at(x, y);
+      ASSERT_EQ(zones.at(x, y), expected) << x << "," << y;
       near_row_width += (y == 230 && zones.at(x, y) == Zone::margin) ? 1 : 0;
       far_row_width += (y == 100 && zones.at(x, y) == Zone::margin) ? 1 : 0;
     }

@@ -143,9 +143,11 @@ using Polygon = std::vector<Eigen::Vector2d>;
 
 // Convex hull (counter-clockwise in image coordinates) by the monotone chain.
 Polygon convex_hull(Polygon points) {
-  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
+  std::sort(
+      points.begin(), points.end(),
+      [](const auto& a, const auto& b) {
+        return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+      });
   auto cross = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
   };

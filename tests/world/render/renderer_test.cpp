@@ -234,7 +234,8 @@ TEST(Renderer, RightImageWarpedByGroundTruthDisparityReproducesTheLeftForEveryLi
 }
 
 // Shift s (px) that best maps b onto a along the columns: a(u, v) ~ b(u, v + s).
-double vertical_shift(const imaging::Image<std::uint8_t>& a, const imaging::Image<std::uint8_t>& b) {
+double vertical_shift(const imaging::Image<std::uint8_t>& a,
+                      const imaging::Image<std::uint8_t>& b) {
   double best_shift = 0.0;
   double best_cost = 1e300;
   for (double s = -4.0; s <= 4.0; s += 0.02) {
@@ -262,10 +263,10 @@ TEST(Renderer, RightCameraTiltShiftsItsRowsByFocalTimesTilt) {
   const double tilt_arcsec = 600.0;
   imaging::RigParameters tilted;
   tilted.right_misalignment.tilt_arcsec = tilt_arcsec;
-  const auto ideal = site.renderer.render_view(imaging::StereoRig{}, imaging::Eye::right, site.placement,
-                                               surface, noiseless());
-  const auto frame = site.renderer.render_with_ground_truth(imaging::StereoRig(tilted), site.placement,
-                                                            surface, noiseless());
+  const auto ideal = site.renderer.render_view(imaging::StereoRig{}, imaging::Eye::right,
+                                               site.placement, surface, noiseless());
+  const auto frame = site.renderer.render_with_ground_truth(imaging::StereoRig(tilted),
+                                                            site.placement, surface, noiseless());
   const double f = tilted.focal_mm / tilted.sensor_mm * tilted.width_px;
   const double expected = f * tilt_arcsec / 3600.0 * kPi / 180.0; // about 1.28 px
   const double shift = vertical_shift(frame.images.right, ideal);

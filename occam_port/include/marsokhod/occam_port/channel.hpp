@@ -1,8 +1,8 @@
 // Occam channels: the untyped ChanBase (internal or on a link) and the typed Chan<T>.
 #pragma once
 
-#include "marsokhod/emulator/node/cost_table.hpp"
 #include "marsokhod/emulator/kernel/kernel.hpp"
+#include "marsokhod/emulator/node/cost_table.hpp"
 #include "marsokhod/occam_port/chan_ends.hpp"
 
 #include <cstddef>
@@ -82,9 +82,8 @@ private:
     Registration(const Registration&) = delete;
     Registration& operator=(const Registration&) = delete;
     ~Registration() {
-      if (channel_ != nullptr && channel_->registration_ == this) {
+      if (channel_ != nullptr && channel_->registration_ == this)
         channel_->withdraw();
-      }
     }
 
   private:
@@ -189,11 +188,10 @@ private:
     *static_cast<T*>(destination) = *static_cast<const T*>(source);
   }
   static constexpr CopyFn copy = [] {
-    if constexpr (std::is_trivially_copyable_v<T> && (sizeof(T) == 4 || sizeof(T) == 8)) {
+    if constexpr (std::is_trivially_copyable_v<T> && (sizeof(T) == 4 || sizeof(T) == 8))
       return &ChanBase::copy_plain<sizeof(T)>;
-    } else {
+    else
       return &copy_value;
-    }
   }();
 };
 

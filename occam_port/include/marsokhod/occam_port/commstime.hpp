@@ -1,8 +1,8 @@
 // The Commstime benchmark network and what one run of it measures.
 #pragma once
 
-#include "marsokhod/emulator/node/node.hpp"
 #include "marsokhod/emulator/kernel/time.hpp"
+#include "marsokhod/emulator/node/node.hpp"
 
 #include <cstdint>
 

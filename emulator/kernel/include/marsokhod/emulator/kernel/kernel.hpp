@@ -33,10 +33,10 @@
 //   DeadlockReport when every live process is blocked and no event is pending.
 #pragma once
 
-#include "marsokhod/emulator/node/cpu.hpp"
 #include "marsokhod/emulator/kernel/deadlock_report.hpp"
 #include "marsokhod/emulator/kernel/process.hpp"
 #include "marsokhod/emulator/kernel/time.hpp"
+#include "marsokhod/emulator/node/cpu.hpp"
 #include "marsokhod/emulator/trace/trace_sink.hpp"
 
 #include <algorithm>
@@ -151,9 +151,8 @@ public:
   Process* current() const { return current_; }
   /// Charges `duration` of CPU time to the current process (a compute-chunk boundary).
   void consume(Tick duration) {
-    if (!consume_quickly(duration)) {
+    if (!consume_quickly(duration))
       consume_slowly(duration);
-    }
   }
   /// consume()'s fast path alone: true if the chunk was charged; false if consume() is due,
   /// with nothing changed.
@@ -174,9 +173,8 @@ public:
   bool block_until(Tick deadline, WaitInfo why);
   /// Makes a blocked process ready; does nothing if it is not blocked.
   void wake(Process& process) {
-    if (process.state_ != ProcessState::blocked) {
+    if (process.state_ != ProcessState::blocked)
       return;
-    }
     // Fast path, the usual end of a channel communication: a low-priority process with no
     // deadline, woken while its CPU is busy, only joins the back of its ready queue.
     Cpu& cpu = *process.cpu_;

@@ -1,8 +1,8 @@
 // The handshake timing of a link at a given speed: data and acknowledge packets.
 #pragma once
 
-#include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/emulator/kernel/time.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
 
 #include <array>
 #include <cstdint>

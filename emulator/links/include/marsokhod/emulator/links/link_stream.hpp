@@ -1,8 +1,8 @@
 // The link throughput experiment: byte streams between two nodes over one wire.
 #pragma once
 
-#include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/emulator/kernel/time.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/emulator/trace/trace_sink.hpp"
 
 #include <cstddef>

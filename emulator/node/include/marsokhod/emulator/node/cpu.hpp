@@ -86,11 +86,10 @@ private:
 inline void Cpu::push_back(Process& p) {
   Queue& q = queues_[static_cast<int>(p.priority())];
   p.next_ready_ = nullptr;
-  if (q.tail == nullptr) {
+  if (q.tail == nullptr)
     q.head = &p;
-  } else {
+  else
     q.tail->next_ready_ = &p;
-  }
   q.tail = &p;
   ++ready_count_;
 }
@@ -99,24 +98,21 @@ inline void Cpu::push_front(Process& p) {
   Queue& q = queues_[static_cast<int>(p.priority())];
   p.next_ready_ = q.head;
   q.head = &p;
-  if (q.tail == nullptr) {
+  if (q.tail == nullptr)
     q.tail = &p;
-  }
   ++ready_count_;
 }
 
 inline Process* Cpu::pop() {
   for (Queue& q : queues_) {
     Process* p = q.head;
-    if (p == nullptr) {
+    if (p == nullptr)
       continue;
-    }
     // p->next_ready_ keeps its stale value: it is read only while p is queued, and every
     // push sets it.
     q.head = p->next_ready_;
-    if (q.head == nullptr) {
+    if (q.head == nullptr)
       q.tail = nullptr;
-    }
     --ready_count_;
     return p;
   }

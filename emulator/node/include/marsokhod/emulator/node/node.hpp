@@ -1,10 +1,10 @@
 // A T805 node: CPU cost model, two priorities, timers, memory and link ports.
 #pragma once
 
-#include "marsokhod/emulator/node/cost_table.hpp"
-#include "marsokhod/emulator/node/cpu.hpp"
 #include "marsokhod/emulator/kernel/kernel.hpp"
 #include "marsokhod/emulator/memory/memory_arena.hpp"
+#include "marsokhod/emulator/node/cost_table.hpp"
+#include "marsokhod/emulator/node/cpu.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
 
 #include <array>
@@ -54,9 +54,8 @@ public:
   static Node& current() {
     const Kernel* kernel = Kernel::active();
     const Process* p = kernel != nullptr ? kernel->current() : nullptr;
-    if (p == nullptr || p->cpu().node() == nullptr) {
+    if (p == nullptr || p->cpu().node() == nullptr)
       no_current_node();
-    }
     return *p->cpu().node();
   }
 

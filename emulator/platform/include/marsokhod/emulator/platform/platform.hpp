@@ -1,9 +1,9 @@
 // Platform and processor files: the nodes, devices and wiring of a transputer network.
 #pragma once
 
-#include "marsokhod/emulator/node/cost_table.hpp"
-#include "marsokhod/emulator/memory/memory_arena.hpp"
 #include "marsokhod/emulator/kernel/time.hpp"
+#include "marsokhod/emulator/memory/memory_arena.hpp"
+#include "marsokhod/emulator/node/cost_table.hpp"
 
 #include <cstdint>
 #include <filesystem>

@@ -54,11 +54,10 @@ enum class VerticalInterpolation : std::uint8_t {
 /// integer weighted sum. Throws CalibrationError when the map's size differs from the image's.
 /// Instantiated for NullMeter, CountingMeter and DynamicMeter.
 template <class Meter = NullMeter>
-imaging::Image<std::uint8_t>
-remove_vertical_parallax(imaging::ImageView<const std::uint8_t> right, const VerticalParallaxMap& map,
-                         VerticalInterpolation interpolation = VerticalInterpolation::linear,
-                         Meter& meter = null_meter,
-                         std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+imaging::Image<std::uint8_t> remove_vertical_parallax(
+    imaging::ImageView<const std::uint8_t> right, const VerticalParallaxMap& map,
+    VerticalInterpolation interpolation = VerticalInterpolation::linear, Meter& meter = null_meter,
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// Largest |shift| a calibration file may hold, rows: beyond it rows no longer correspond.
 inline constexpr double kMaxVerticalShift = 64.0;

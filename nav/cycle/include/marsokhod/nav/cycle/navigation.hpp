@@ -1,12 +1,12 @@
 // One navigation cycle: from a stereo pair and the rig to zones, a safe path and drive commands.
 #pragma once
 
+#include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/path/drive_commands.hpp"
-#include "marsokhod/nav/terrain/elevation.hpp"
-#include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/nav/path/path_planner.hpp"
 #include "marsokhod/nav/stereo/stereo.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/nav/work/work.hpp"
 #include "marsokhod/nav/zones/zones.hpp"
 
@@ -66,18 +66,18 @@ struct NavigationResult {
 /// options; a pair that yields no path (nothing matched, everything prohibited) is a result
 /// with found() false and a reason. Instantiated for NullMeter, CountingMeter, DynamicMeter.
 template <class Meter = NullMeter>
-NavigationResult navigate(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
-                          const imaging::StereoRig& rig, const NavigationOptions& options,
-                          Meter& meter = null_meter,
-                          std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+NavigationResult
+navigate(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
+         const imaging::StereoRig& rig, const NavigationOptions& options, Meter& meter = null_meter,
+         std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// The same cycle from a disparity map already made (+inf unknown); `reliable` (may be empty)
 /// marks the pixels that passed the left-right check.
 template <class Meter = NullMeter>
 NavigationResult
-navigate_disparity(imaging::ImageView<const float> disparity, imaging::ImageView<const std::uint8_t> reliable,
-                   const imaging::StereoRig& rig, const NavigationOptions& options,
-                   Meter& meter = null_meter,
+navigate_disparity(imaging::ImageView<const float> disparity,
+                   imaging::ImageView<const std::uint8_t> reliable, const imaging::StereoRig& rig,
+                   const NavigationOptions& options, Meter& meter = null_meter,
                    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 } // namespace marsokhod::nav

@@ -1,8 +1,8 @@
 // Drive commands: turn-then-drive legs from a path, and the polyline simplification.
 #pragma once
 
-#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/nav/path/path_planner.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
 
 #include <memory_resource>
 #include <span>

@@ -1,8 +1,8 @@
 // The safest path: planner options, the row sweep over the pixel graph and plan_path.
 #pragma once
 
-#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/nav/work/work.hpp"
 #include "marsokhod/nav/zones/zones.hpp"
 

@@ -1,8 +1,8 @@
 // The pixels the rover crosses from where it stands to the start of its path.
 #pragma once
 
-#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/nav/path/path_planner.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
 
 #include <memory_resource>
 #include <vector>

@@ -29,14 +29,16 @@ std::optional<FillPolicy> parse_fill_policy(std::string_view text);
 /// Applies `policy` to the pixels where `valid` is 0; returns how many pixels it wrote. When
 /// no pixel at all is valid nothing is written.
 template <class Meter = NullMeter>
-std::uint64_t fill_disparity(imaging::ImageView<float> disparity, imaging::ImageView<const std::uint8_t> valid,
-                             FillPolicy policy, Meter& meter = null_meter,
+std::uint64_t fill_disparity(imaging::ImageView<float> disparity,
+                             imaging::ImageView<const std::uint8_t> valid, FillPolicy policy,
+                             Meter& meter = null_meter,
                              std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// 3x3 median of `input` into `output` (same size, borders repeated); it removes the isolated
 /// wrong pixels and the one-row streaks that a row-by-row optimisation leaves.
 template <class Meter = NullMeter>
-void median3x3(imaging::ImageView<const float> input, imaging::ImageView<float> output, Meter& meter = null_meter,
+void median3x3(imaging::ImageView<const float> input, imaging::ImageView<float> output,
+               Meter& meter = null_meter,
                std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 } // namespace marsokhod::nav

@@ -19,7 +19,8 @@ struct BadPixelScore {
 /// The Middlebury "bad" metric: among the pixels whose ground truth is known (finite and
 /// above zero) and, when `mask` is not empty, whose mask value is non-zero, the share whose
 /// estimate is missing (non-finite) or differs from the truth by more than `threshold`.
-BadPixelScore score_bad_pixels(imaging::ImageView<const float> estimate, imaging::ImageView<const float> truth,
+BadPixelScore score_bad_pixels(imaging::ImageView<const float> estimate,
+                               imaging::ImageView<const float> truth,
                                imaging::ImageView<const std::uint8_t> mask, float threshold);
 
 } // namespace marsokhod::nav

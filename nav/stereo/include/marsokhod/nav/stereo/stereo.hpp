@@ -1,10 +1,10 @@
 // The stereo matcher: options, result and match_stereo across the pyramid layers.
 #pragma once
 
-#include "marsokhod/nav/features/brightness_features.hpp"
-#include "marsokhod/nav/stereo/disparity_fill.hpp"
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/features/brightness_features.hpp"
 #include "marsokhod/nav/matching/scanline_dp.hpp"
+#include "marsokhod/nav/stereo/disparity_fill.hpp"
 #include "marsokhod/nav/work/work.hpp"
 
 #include <cstdint>
@@ -84,7 +84,8 @@ int pyramid_levels_for(int width, int height, const StereoOptions& options);
 /// image gives a result with no valid pixel and a reason. Instantiated for NullMeter,
 /// CountingMeter and DynamicMeter.
 template <class Meter = NullMeter>
-StereoResult match_stereo(imaging::ImageView<const std::uint8_t> left, imaging::ImageView<const std::uint8_t> right,
+StereoResult match_stereo(imaging::ImageView<const std::uint8_t> left,
+                          imaging::ImageView<const std::uint8_t> right,
                           const StereoOptions& options, Meter& meter = null_meter,
                           std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 

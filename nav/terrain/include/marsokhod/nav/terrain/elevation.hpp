@@ -1,8 +1,8 @@
 // Range and elevation: the visible terrain's level-frame points from a disparity map.
 #pragma once
 
-#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/work/work.hpp"
 
 #include <cmath>
@@ -15,10 +15,11 @@ namespace marsokhod::nav {
 /// left image (docs/navigation.md, "Range and elevation"). Unknown pixels (no disparity, or a
 /// disparity of zero or less) hold +inf in every field, as Middlebury PFM files do.
 struct TerrainPoints {
-  imaging::Image<float> forward;   ///< level x, metres ahead of the rover centre along its heading
-  imaging::Image<float> left;      ///< level y, metres to the left
-  imaging::Image<float> elevation; ///< level z: height above the horizontal plane under the rover, m
-  imaging::Image<float> range;     ///< ground (horizontal) distance from the rover centre, m
+  imaging::Image<float> forward; ///< level x, metres ahead of the rover centre along its heading
+  imaging::Image<float> left;    ///< level y, metres to the left
+  imaging::Image<float>
+      elevation;               ///< level z: height above the horizontal plane under the rover, m
+  imaging::Image<float> range; ///< ground (horizontal) distance from the rover centre, m
   std::uint64_t known_pixels = 0;
 
   int width() const { return elevation.width(); }

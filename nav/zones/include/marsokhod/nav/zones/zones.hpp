@@ -1,8 +1,8 @@
 // Prohibited zones: steps, slopes, margins and unknown ground, pixel by pixel.
 #pragma once
 
-#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/nav/work/work.hpp"
 
 #include <array>

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"
-#include "marsokhod/world/terrain/height_field.hpp"
 #include "marsokhod/world/lighting/lighting.hpp"
+#include "marsokhod/world/terrain/height_field.hpp"
 #include "marsokhod/world/terrain/regolith_noise.hpp"
 
 #include <Eigen/Core>

@@ -1,8 +1,8 @@
 // The ray-casting stereo renderer: options, rendered pairs and their ground truth.
 #pragma once
 
-#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/world/render/ground_truth.hpp"
 #include "marsokhod/world/render/max_mipmap.hpp"
 #include "marsokhod/world/terrain/terrain.hpp"
@@ -61,20 +61,22 @@ public:
   StereoImages render(const imaging::StereoRig& rig, const RoverPlacement& placement,
                       const LitSurface& surface, const RenderOptions& options = {}) const;
   /// The images and the ground truth of the left image, sharing the left camera's rays.
-  RenderedFrame render_with_ground_truth(const imaging::StereoRig& rig, const RoverPlacement& placement,
-                                         const LitSurface& surface,
+  RenderedFrame render_with_ground_truth(const imaging::StereoRig& rig,
+                                         const RoverPlacement& placement, const LitSurface& surface,
                                          const RenderOptions& options = {}) const;
   /// One image: the given camera's view.
   imaging::Image<std::uint8_t> render_view(const imaging::StereoRig& rig, imaging::Eye eye,
-                                       const RoverPlacement& placement, const LitSurface& surface,
-                                       const RenderOptions& options = {}) const;
+                                           const RoverPlacement& placement,
+                                           const LitSurface& surface,
+                                           const RenderOptions& options = {}) const;
 
 private:
   imaging::Image<std::uint8_t> render_eye(const imaging::StereoRig& rig, imaging::Eye eye,
-                                      const RoverPlacement& placement, const LitSurface& surface,
-                                      const RenderOptions& options, GroundTruth* truth,
-                                      const imaging::Image<float>* right_depth = nullptr,
-                                      imaging::Image<float>* depth = nullptr) const;
+                                          const RoverPlacement& placement,
+                                          const LitSurface& surface, const RenderOptions& options,
+                                          GroundTruth* truth,
+                                          const imaging::Image<float>* right_depth = nullptr,
+                                          imaging::Image<float>* depth = nullptr) const;
 
   const Terrain* terrain_;
   MaxMipmap mipmap_;

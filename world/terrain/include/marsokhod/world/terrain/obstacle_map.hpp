@@ -32,6 +32,7 @@ inline constexpr std::uint8_t kObstacle = 255;
 ///    gradient along x is (mean of column +d - mean of column -d) / (2 d cell), likewise along y
 ///    (samples clamp to the grid, and the distance between the clamped columns is used).
 /// Throws std::invalid_argument for non-positive or non-finite limits.
-imaging::Image<std::uint8_t> obstacle_map(const HeightField& height, const LocomotionLimits& limits);
+imaging::Image<std::uint8_t> obstacle_map(const HeightField& height,
+                                          const LocomotionLimits& limits);
 
 } // namespace marsokhod::world

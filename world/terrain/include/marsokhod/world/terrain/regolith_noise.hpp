@@ -27,8 +27,8 @@ struct NoiseOctave {
 /// Adds amplitude * N(x / wavelength) to every node, where N is value noise with values in
 /// [-1, 1) on an integer lattice, interpolated by separable Catmull-Rom cubics (C1, so shading
 /// shows no lattice creases). The lattice is anchored to the world, not to the grid.
-void add_value_noise(imaging::Image<float>& field, const GridFrame& frame, const NoiseOctave& octave,
-                     std::uint64_t seed);
+void add_value_noise(imaging::Image<float>& field, const GridFrame& frame,
+                     const NoiseOctave& octave, std::uint64_t seed);
 
 /// Sum of octaves (fractal noise); octave k draws its lattice from substream_seed(seed, k).
 void add_fractal_noise(imaging::Image<float>& field, const GridFrame& frame,

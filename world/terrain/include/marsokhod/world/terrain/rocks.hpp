@@ -73,6 +73,7 @@ std::vector<Rock> sample_rocks(const RockField& field, std::uint64_t seed);
 
 /// Sets every node a rock covers to ground + rock height (the highest rock where rocks overlap)
 /// and paints the rock's textured albedo there.
-void place_rocks(const std::vector<Rock>& rocks, HeightField& height, imaging::Image<float>& albedo);
+void place_rocks(const std::vector<Rock>& rocks, HeightField& height,
+                 imaging::Image<float>& albedo);
 
 } // namespace marsokhod::world

@@ -1,13 +1,13 @@
 // The synthetic Mars site: generator settings and the generated terrain.
 #pragma once
 
-#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/image/image.hpp"
-#include "marsokhod/world/terrain/height_field.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/world/lighting/lighting.hpp"
 #include "marsokhod/world/lighting/lit_surface.hpp"
-#include "marsokhod/world/terrain/obstacle_map.hpp"
 #include "marsokhod/world/scene/rover_placement.hpp"
+#include "marsokhod/world/terrain/height_field.hpp"
+#include "marsokhod/world/terrain/obstacle_map.hpp"
 
 #include <Eigen/Core>
 
