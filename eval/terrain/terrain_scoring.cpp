@@ -1,4 +1,5 @@
-#include "terrain_scoring.hpp"
+// Per-pixel scoring of zones, hazards and elevations by true range band, and unsafe paths.
+#include "marsokhod/eval/terrain/terrain_scoring.hpp"
 
 #include "marsokhod/nav/path/start_approach.hpp"
 
@@ -7,7 +8,7 @@
 #include <limits>
 #include <optional>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 namespace {
 
 std::optional<std::size_t> band_of(double range) {
@@ -122,4 +123,4 @@ double percent(std::uint64_t part, std::uint64_t whole) {
   return 100.0 * static_cast<double>(part) / static_cast<double>(whole);
 }
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval
