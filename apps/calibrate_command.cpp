@@ -3,10 +3,10 @@
 
 #include "command.hpp"
 
-#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
-#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax_calibration.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -1,9 +1,9 @@
 #include "command.hpp"
 
-#include "marsokhod/emulator/trace/chrome_trace.hpp"
 #include "marsokhod/emulator/kernel/kernel.hpp"
 #include "marsokhod/emulator/node/node.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/emulator/trace/chrome_trace.hpp"
 #include "marsokhod/occam_port/commstime.hpp"
 
 #include <fmt/format.h>
@@ -37,10 +37,9 @@ struct Measurement {
 
 const emu::NodeSpec& choose_node(const emu::PlatformSpec& platform, const std::string& name) {
   if (name.empty()) {
-    for (const emu::NodeSpec& node : platform.nodes) {
+    for (const emu::NodeSpec& node : platform.nodes)
       if (node.powered)
         return node;
-    }
     throw CommandError(fmt::format("{}: no powered node to run Commstime on", platform.source));
   }
   const emu::NodeSpec* node = platform.find_node(name);

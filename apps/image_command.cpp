@@ -3,8 +3,8 @@
 
 #include "command.hpp"
 
-#include "marsokhod/imaging/pictures/colormap.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/imaging/pictures/colormap.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -179,7 +179,8 @@ int run_convert(const ConvertOptions& options) {
   } else if (ends_with_pfm(options.output)) {
     imaging::write_image(options.output, to_float(std::move(image)).view());
   } else {
-    std::visit([&](const auto& pixels) { imaging::write_image(options.output, pixels.view()); }, image);
+    std::visit([&](const auto& pixels) { imaging::write_image(options.output, pixels.view()); },
+               image);
   }
   fmt::print("wrote {}\n", options.output);
   return kSuccess;

@@ -1,8 +1,8 @@
 #include "command.hpp"
 
-#include "marsokhod/emulator/trace/chrome_trace.hpp"
 #include "marsokhod/emulator/links/link_stream.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/emulator/trace/chrome_trace.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

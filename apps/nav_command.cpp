@@ -3,10 +3,11 @@
 #include "command.hpp"
 #include "nav_outputs.hpp"
 
-#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
-#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/world/scene/scene_file.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -14,7 +15,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -112,16 +112,10 @@ imaging::Image<float> read_disparity(const fs::path& path, int width, int height
 
 // The attitude the world placed the rover in, as its scene.json records it.
 imaging::Attitude scene_attitude(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw CommandError(fmt::format("{}: cannot open the scene file", path.string()));
   try {
-    const nlohmann::json scene = nlohmann::json::parse(in);
-    const nlohmann::json& attitude = scene.at("placement").at("attitude");
-    return {attitude.at("pitch_deg").get<double>(), attitude.at("roll_deg").get<double>()};
-  } catch (const nlohmann::json::exception& error) {
-    throw CommandError(fmt::format("{}: not a scene file with placement.attitude: {}",
-                                   path.string(), error.what()));
+    return world::read_scene_attitude(path);
+  } catch (const world::SceneFileError& error) {
+    throw CommandError(error.what());
   }
 }
 
@@ -154,8 +148,8 @@ int run_nav(const NavCli& cli) {
   const imaging::StereoRig rig = rig_for(cli, left.width(), left.height());
   right = aligned_right(cli, std::move(right));
   nav::NavigationOptions options;
-  options.attitude =
-      cli.scene_file ? scene_attitude(*cli.scene_file) : imaging::Attitude{cli.pitch_deg, cli.roll_deg};
+  options.attitude = cli.scene_file ? scene_attitude(*cli.scene_file)
+                                    : imaging::Attitude{cli.pitch_deg, cli.roll_deg};
   options.planner.heading_deg = cli.heading_deg;
   options.zones.max_step_m = cli.max_step_m;
   std::optional<imaging::Image<float>> given;

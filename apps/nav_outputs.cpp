@@ -2,8 +2,8 @@
 
 #include "command.hpp"
 
-#include "marsokhod/imaging/pictures/colormap.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/imaging/pictures/colormap.hpp"
 
 #include <fmt/format.h>
 
@@ -65,7 +65,7 @@ imaging::Image<std::uint8_t> zone_picture(const nav::ZoneMap& zones) {
 }
 
 imaging::Image<std::uint8_t> path_overlay(const imaging::Image<std::uint8_t>& left,
-                                      const nav::NavigationResult& result) {
+                                          const nav::NavigationResult& result) {
   imaging::Image<std::uint8_t> picture(left.width(), left.height(), 3);
   for (int y = 0; y < left.height(); ++y)
     for (int x = 0; x < left.width(); ++x)

@@ -73,7 +73,8 @@ nlohmann::ordered_json rig_json(const imaging::StereoRig& rig) {
         {{"row", v},
          {"ground_distance_m", finite_or_null(imaging::ground_distance_at_row(rig, v))},
          {"ground_disparity_px", rig.ground_disparity(rig.cx(), v)}});
-  const imaging::ObstacleParallax stone = imaging::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
+  const imaging::ObstacleParallax stone =
+      imaging::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
   json["stone_14m"] = {{"distance_m", stone.distance_m},
                        {"height_m", stone.height_m},
                        {"top_row", stone.top_row},
@@ -104,9 +105,11 @@ void print_text(const imaging::StereoRig& rig) {
   fmt::print("  horizon row             {:.2f}\n\n", imaging::horizon_row(rig));
   fmt::print("   row  ground (m)  disparity (px)\n");
   for (int v : table_rows(rig))
-    fmt::print("  {:4d}  {}  {:14.3f}\n", v, metres_or_dash(imaging::ground_distance_at_row(rig, v)),
+    fmt::print("  {:4d}  {}  {:14.3f}\n", v,
+               metres_or_dash(imaging::ground_distance_at_row(rig, v)),
                rig.ground_disparity(rig.cx(), v));
-  const imaging::ObstacleParallax stone = imaging::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
+  const imaging::ObstacleParallax stone =
+      imaging::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
   fmt::print("\n{:.0f} cm stone {:.0f} m ahead (paper section 2: \"3 pixels\"):\n",
              stone.height_m * 100.0, stone.distance_m);
   fmt::print("  top {:.3f} px, foot {:.3f} px: top - foot = {:.3f} px\n", stone.top_disparity_px,

@@ -1,9 +1,10 @@
 // `marsokhod eval stereo`: the Middlebury bad-1.0 metric over a PAIRS.tsv index, on the real
 // pairs and on synthetic ones (8- and 16-bit ground truth, a pair without ground truth), and
 // clear errors naming the index file and line for bad indexes.
-#include "marsokhod/imaging/image/image_io.hpp"
 #include "nav/stereo_test_support.hpp"
 #include "support/run_marsokhod.hpp"
+
+#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -54,11 +55,12 @@ protected:
 };
 
 TEST_F(EvalStereoCommand, ScoresEightAndSixteenBitGroundTruthAndTimesPairsWithout) {
-  const fs::path file = index(kHeader +
-                              "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\t4\t8\t128\t96\t14\t-\n"
-                              "kitti\tdots_left.pgm\tdots_right.pgm\tdots_gt16.pgm\t256\t16\t128\t96\t14\t-\n"
-                              "blind\tdots_left.pgm\tdots_right.pgm\t-\t-\t-\t128\t96\t-\t-\n");
-  const auto result = run_marsokhod("eval stereo '" + file.string() + "' --json --max-disparity 20");
+  const fs::path file = index(
+      kHeader + "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\t4\t8\t128\t96\t14\t-\n"
+                "kitti\tdots_left.pgm\tdots_right.pgm\tdots_gt16.pgm\t256\t16\t128\t96\t14\t-\n"
+                "blind\tdots_left.pgm\tdots_right.pgm\t-\t-\t-\t128\t96\t-\t-\n");
+  const auto result =
+      run_marsokhod("eval stereo '" + file.string() + "' --json --max-disparity 20");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json json = nlohmann::json::parse(result.out);
   ASSERT_EQ(json["pairs"].size(), 3U);
@@ -78,10 +80,11 @@ TEST_F(EvalStereoCommand, ScoresEightAndSixteenBitGroundTruthAndTimesPairsWithou
 }
 
 TEST_F(EvalStereoCommand, WritesEachPairsDisparityWithOut) {
-  const fs::path file = index(kHeader +
-                              "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\t4\t8\t128\t96\t14\t-\n");
+  const fs::path file =
+      index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\t4\t8\t128\t96\t14\t-\n");
   const fs::path out = dir_ / "out";
-  const auto result = run_marsokhod("eval stereo '" + file.string() + "' --out '" + out.string() + "'");
+  const auto result =
+      run_marsokhod("eval stereo '" + file.string() + "' --out '" + out.string() + "'");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("eight"), std::string::npos);
   const imaging::Image<float> disparity = imaging::read_pfm(out / "eight_disparity.pfm");
@@ -103,24 +106,31 @@ TEST_F(EvalStereoCommand, AHeaderWithoutARequiredColumnIsRefused) {
 }
 
 TEST_F(EvalStereoCommand, AMissingImageFileIsNamedWithItsLine) {
-  expect_index_error(index(kHeader + "eight\tdots_left.pgm\tnowhere.pgm\tdots_gt.pgm\t4\t8\t128\t96\t14\t-\n"),
-                     {"PAIRS.tsv:2", "nowhere.pgm", "does not exist"});
+  expect_index_error(
+      index(kHeader + "eight\tdots_left.pgm\tnowhere.pgm\tdots_gt.pgm\t4\t8\t128\t96\t14\t-\n"),
+      {"PAIRS.tsv:2", "nowhere.pgm", "does not exist"});
 }
 
 TEST_F(EvalStereoCommand, AnImageOfAnotherSizeThanTheIndexSaysIsRefused) {
-  expect_index_error(index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\t4\t8\t120\t96\t14\t-\n"),
-                     {"PAIRS.tsv:2", "128x96", "120x96"});
+  expect_index_error(
+      index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\t4\t8\t120\t96\t14\t-\n"),
+      {"PAIRS.tsv:2", "128x96", "120x96"});
 }
 
 TEST_F(EvalStereoCommand, GroundTruthOfAnotherDepthThanGtBitsIsRefused) {
-  expect_index_error(index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\t256\t16\t128\t96\t14\t-\n"),
-                     {"PAIRS.tsv:2", "16-bit"});
+  expect_index_error(
+      index(kHeader +
+            "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\t256\t16\t128\t96\t14\t-\n"),
+      {"PAIRS.tsv:2", "16-bit"});
 }
 
 TEST_F(EvalStereoCommand, AShortLineAndABadNumberAreRefused) {
-  expect_index_error(index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\n"), {"PAIRS.tsv:2", "missing"});
-  expect_index_error(index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\tfour\t8\t128\t96\t14\t-\n"),
-                     {"PAIRS.tsv:2", "gt_scale", "four"});
+  expect_index_error(index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\n"),
+                     {"PAIRS.tsv:2", "missing"});
+  expect_index_error(
+      index(kHeader +
+            "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\tfour\t8\t128\t96\t14\t-\n"),
+      {"PAIRS.tsv:2", "gt_scale", "four"});
 }
 
 TEST(EvalStereoRealData, ReportsEveryPairAndAMeanBelowTheSgbmPeer) {

@@ -1,3 +1,4 @@
+// `marsokhod nav`: its outputs on a rendered scene, and its exit codes and messages for bad inputs.
 #include "support/run_marsokhod.hpp"
 
 #include "marsokhod/imaging/image/image.hpp"
@@ -46,8 +47,8 @@ const fs::path& scene() {
   static const fs::path dir = [] {
     const fs::path folder = fresh_folder(
         std::string("scene-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    const auto result = run_marsokhod("world --terrain-size 16 --size 128 --seed 2 --out " +
-                                      quoted(folder));
+    const auto result =
+        run_marsokhod("world --terrain-size 16 --size 128 --seed 2 --out " + quoted(folder));
     EXPECT_EQ(result.exit_code, 0) << result.err;
     return folder;
   }();
@@ -69,8 +70,8 @@ TEST(NavCommand, WritesEveryOutputAndThePathDocument) {
   const auto path = nlohmann::json::parse(slurp(out / "path.json"));
   ASSERT_TRUE(path.contains("found"));
   if (path["found"]) {
-    for (const char* key : {"pixel_path", "ground_polyline", "start_m", "fracture_m", "target_m",
-                            "commands"})
+    for (const char* key :
+         {"pixel_path", "ground_polyline", "start_m", "fracture_m", "target_m", "commands"})
       EXPECT_TRUE(path.contains(key)) << key;
     EXPECT_GE(path["target_m"].get<double>(), 10.0);
     EXPECT_LE(path["target_m"].get<double>(), 12.0);
@@ -149,7 +150,8 @@ TEST(NavCommand, NanInADisparityFileIsAnErrorNamingTheFileAndPixel) {
   Image<float> disparity(128, 128, 1, 20.0F);
   disparity(5, 7) = std::numeric_limits<float>::quiet_NaN();
   marsokhod::imaging::write_image(dir / "d.pfm", disparity.view());
-  const auto result = run_marsokhod(nav_args(dir / "out") + " --disparity " + quoted(dir / "d.pfm"));
+  const auto result =
+      run_marsokhod(nav_args(dir / "out") + " --disparity " + quoted(dir / "d.pfm"));
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("d.pfm: pixel (5, 7)"), std::string::npos) << result.err;
 }
@@ -192,6 +194,26 @@ TEST(NavCommand, ARigOfAnotherSizeIsAnError) {
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("the rig is 256x256 but the images are 128x128"), std::string::npos)
       << result.err;
+}
+
+TEST(NavCommand, TheSceneFilesAttitudeIsUsedAndBadSceneFilesAreErrorsNamingThem) {
+  const fs::path out = fresh_folder("scene-attitude");
+  const auto result = run_marsokhod(nav_args(out / "out") + " --scene " +
+                                    quoted(scene() / "scene.json") + " --json");
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  const fs::path missing = out / "nowhere.json";
+  const auto none = run_marsokhod(nav_args(out / "out") + " --scene " + quoted(missing));
+  EXPECT_EQ(none.exit_code, 1);
+  EXPECT_NE(none.err.find(missing.string() + ": cannot open the scene file"), std::string::npos)
+      << none.err;
+  std::ofstream(out / "other.json") << R"({"placement": {}})";
+  const auto other =
+      run_marsokhod(nav_args(out / "out") + " --scene " + quoted(out / "other.json"));
+  EXPECT_EQ(other.exit_code, 1);
+  EXPECT_NE(other.err.find((out / "other.json").string() +
+                           ": not a scene file with placement.attitude: "),
+            std::string::npos)
+      << other.err;
 }
 
 } // namespace

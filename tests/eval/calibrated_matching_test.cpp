@@ -5,10 +5,10 @@
 #include "nav/stereo_test_support.hpp"
 
 #include "marsokhod/imaging/rig/camera.hpp"
-#include "marsokhod/nav/cycle/navigation.hpp"
-#include "marsokhod/nav/stereo/stereo.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax_calibration.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/nav/stereo/stereo.hpp"
 #include "marsokhod/world/lighting/lighting.hpp"
 #include "marsokhod/world/lighting/lit_surface.hpp"
 #include "marsokhod/world/render/renderer.hpp"
@@ -66,7 +66,8 @@ struct Site {
 };
 
 // Share of the ground-truth-valid pixels whose disparity lies within 1 px of the truth.
-double matching_quality(const world::RenderedFrame& frame, imaging::ImageView<const std::uint8_t> right) {
+double matching_quality(const world::RenderedFrame& frame,
+                        imaging::ImageView<const std::uint8_t> right) {
   imaging::RigParameters parameters;
   parameters.width_px = parameters.height_px = kSize;
   StereoOptions options = NavigationOptions::rover_stereo_defaults();

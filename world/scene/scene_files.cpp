@@ -1,5 +1,5 @@
-#include "marsokhod/imaging/pictures/colormap.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/imaging/pictures/colormap.hpp"
 #include "marsokhod/world/scene/scene.hpp"
 
 #include <fmt/format.h>
@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 // The left image in colour with the pixels that see an obstacle painted red.
 imaging::Image<std::uint8_t> obstacle_overlay(const imaging::Image<std::uint8_t>& left,
-                                          const imaging::Image<std::uint8_t>& obstacles) {
+                                              const imaging::Image<std::uint8_t>& obstacles) {
   imaging::Image<std::uint8_t> out(left.width(), left.height(), 3);
   for (int v = 0; v < left.height(); ++v)
     for (int u = 0; u < left.width(); ++u) {
@@ -29,7 +29,7 @@ imaging::Image<std::uint8_t> obstacle_overlay(const imaging::Image<std::uint8_t>
 }
 
 imaging::Image<std::uint8_t> colour_field(const imaging::Image<float>& field, const char* title,
-                                      const char* unit) {
+                                          const char* unit) {
   imaging::ColormapOptions options;
   options.title = title;
   options.unit = unit;

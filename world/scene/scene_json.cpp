@@ -1,9 +1,13 @@
+// The scene.json writer: every setting that fixed a rendered scene, as one JSON document.
+#include "scene/scene_keys.hpp"
+
 #include "marsokhod/world/scene/scene.hpp"
 
 namespace marsokhod::world {
 namespace {
 
 using nlohmann::json;
+namespace keys = scene_keys;
 
 json terrain_json(const TerrainSettings& t, const LocomotionLimits& limits) {
   return {{"seed", t.seed},
@@ -56,12 +60,13 @@ json placement_json(const RoverPlacement& p) {
   json rows = json::array();
   for (int r = 0; r < 3; ++r)
     rows.push_back({rotation(r, 0), rotation(r, 1), rotation(r, 2)});
-  return {{"pose", {{"x_m", p.pose.x}, {"y_m", p.pose.y}, {"heading_deg", p.pose.heading_deg}}},
-          {"ground_z_m", p.ground_z},
-          {"attitude", {{"pitch_deg", p.attitude.pitch_deg}, {"roll_deg", p.attitude.roll_deg}}},
-          {"level_to_world",
-           {{"translation_m", {translation.x(), translation.y(), translation.z()}},
-            {"rotation", rows}}}};
+  return {
+      {keys::kPose, {{"x_m", p.pose.x}, {"y_m", p.pose.y}, {"heading_deg", p.pose.heading_deg}}},
+      {keys::kGroundZ, p.ground_z},
+      {keys::kAttitude, {{keys::kPitch, p.attitude.pitch_deg}, {keys::kRoll, p.attitude.roll_deg}}},
+      {keys::kLevelToWorld,
+       {{"translation_m", {translation.x(), translation.y(), translation.z()}},
+        {"rotation", rows}}}};
 }
 
 json render_json(const RenderOptions& r) {
@@ -87,15 +92,15 @@ json stats_json(const GroundTruthStats& s) {
 } // namespace
 
 nlohmann::json scene_to_json(const SceneDescription& scene) {
-  return {{"format", "marsokhod-scene"},
-          {"version", 1},
-          {"terrain", terrain_json(scene.terrain, scene.limits)},
-          {"lighting", lighting_json(scene.lighting)},
-          {"rig", rig_json(scene.rig)},
-          {"placement", placement_json(scene.placement)},
-          {"render", render_json(scene.render)},
-          {"ground_truth", stats_json(scene.stats)},
-          {"outputs", scene.outputs}};
+  return {{keys::kFormat, keys::kFormatName},
+          {keys::kVersion, 1},
+          {keys::kTerrain, terrain_json(scene.terrain, scene.limits)},
+          {keys::kLighting, lighting_json(scene.lighting)},
+          {keys::kRig, rig_json(scene.rig)},
+          {keys::kPlacement, placement_json(scene.placement)},
+          {keys::kRender, render_json(scene.render)},
+          {keys::kGroundTruth, stats_json(scene.stats)},
+          {keys::kOutputs, scene.outputs}};
 }
 
 } // namespace marsokhod::world

@@ -1,3 +1,4 @@
+// Reading a stereo-pair index (PAIRS.tsv): pair names, image files and ground-truth encodings.
 #pragma once
 
 #include <filesystem>
@@ -5,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 
 /// One line of a stereo-pair index (the PAIRS.tsv format of docs/navigation.md): paths are
 /// resolved against the index's folder.
@@ -25,8 +26,8 @@ struct StereoPairEntry {
 /// Reads a tab-separated index whose header names at least the columns name, left, right, gt,
 /// gt_scale, gt_bits, width, height and max_gt_disp_px (a header may carry a note in
 /// parentheses, e.g. "gt_scale(disp=value/scale)"; other columns are ignored). "-" marks a
-/// missing ground truth. Throws CommandError naming the file, the line and the problem:
+/// missing ground truth. Throws EvaluationError naming the file, the line and the problem:
 /// missing columns, bad numbers, files that do not exist.
 std::vector<StereoPairEntry> read_stereo_pairs(const std::filesystem::path& index);
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

@@ -1,8 +1,9 @@
-#include "terrain_pictures.hpp"
+// Drawing the comparison picture: verdict colours per pixel and the two paths.
+#include "marsokhod/eval/terrain/terrain_pictures.hpp"
 
 #include <array>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 namespace {
 
 using Rgb = std::array<std::uint8_t, 3>;
@@ -81,4 +82,4 @@ imaging::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison&
   return picture;
 }
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

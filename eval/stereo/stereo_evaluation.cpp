@@ -1,11 +1,13 @@
-#include "stereo_evaluation.hpp"
+// Stereo evaluation: reading each pair and its ground truth, matching, timing and scoring.
+#include "marsokhod/eval/stereo/stereo_evaluation.hpp"
 
-#include "command.hpp"
-#include "stereo_pairs.hpp"
+#include "common/output_folder.hpp"
 
+#include "marsokhod/eval/common/errors.hpp"
+#include "marsokhod/eval/stereo/stereo_pairs.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/pictures/colormap.hpp"
 #include "marsokhod/nav/stereo/disparity_metrics.hpp"
-#include "marsokhod/imaging/image/image_io.hpp"
 
 #include <fmt/format.h>
 
@@ -15,14 +17,14 @@
 #include <filesystem>
 #include <variant>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 namespace {
 
 namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const StereoEvaluationOptions& options, const StereoPairEntry& entry,
                        const std::string& problem) {
-  throw CommandError(fmt::format("{}:{}: {}", options.index, entry.line, problem));
+  throw EvaluationError(fmt::format("{}:{}: {}", options.index, entry.line, problem));
 }
 
 template <class T>
@@ -46,7 +48,7 @@ auto read_for_entry(const StereoEvaluationOptions& options, const StereoPairEntr
 }
 
 imaging::Image<std::uint8_t> read_grey(const StereoEvaluationOptions& options,
-                                   const StereoPairEntry& entry, const fs::path& file) {
+                                       const StereoPairEntry& entry, const fs::path& file) {
   imaging::Image<std::uint8_t> image =
       read_for_entry(options, entry, [&] { return imaging::read_gray8(file); });
   require_size(options, entry, image, file);
@@ -62,7 +64,8 @@ imaging::Image<float> truth_disparity(const imaging::Image<T>& stored, double sc
   return truth;
 }
 
-imaging::Image<float> read_truth(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
+imaging::Image<float> read_truth(const StereoEvaluationOptions& options,
+                                 const StereoPairEntry& entry) {
   const fs::path& file = *entry.truth;
   const imaging::AnyImage stored =
       read_for_entry(options, entry, [&] { return imaging::read_image(file); });
@@ -109,7 +112,7 @@ void write_outputs(const StereoEvaluationOptions& options, const std::string& na
   colour.unit = "px";
   colour.title = "disparity";
   imaging::write_image(dir / (name + "_disparity.png"),
-                   imaging::false_colour(disparity.view(), colour).view());
+                       imaging::false_colour(disparity.view(), colour).view());
 }
 
 PairEvaluation evaluate(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
@@ -170,4 +173,4 @@ std::optional<double> mean_bad_percent(const std::vector<PairEvaluation>& pairs)
   return sum / scored;
 }
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

@@ -1,3 +1,4 @@
+// The three-panel comparison picture of one site: left image, judged zones, ground-truth zones.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"
@@ -6,7 +7,7 @@
 
 #include <cstdint>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 
 /// What `eval terrain --pictures` draws of one site: the left image, the navigation's zones
 /// judged against ground truth, and the ground-truth zones, side by side (docs/navigation.md,
@@ -27,4 +28,4 @@ struct TerrainComparison {
 /// path is drawn green on the first two panels, the ground-truth path cyan on the third.
 imaging::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison& site);
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

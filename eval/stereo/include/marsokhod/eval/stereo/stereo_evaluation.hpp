@@ -1,3 +1,4 @@
+// Matching every pair of a PAIRS.tsv index and scoring it against its ground truth (bad-1.0).
 #pragma once
 
 #include "marsokhod/nav/stereo/stereo.hpp"
@@ -6,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 
 /// What `marsokhod eval stereo` was asked to do.
 struct StereoEvaluationOptions {
@@ -34,11 +35,11 @@ struct PairEvaluation {
   std::string note;
 };
 
-/// Matches and scores every pair of the index; throws CommandError on bad input (naming the
+/// Matches and scores every pair of the index; throws EvaluationError on bad input (naming the
 /// index file and line, or the image file).
 std::vector<PairEvaluation> evaluate_stereo_pairs(const StereoEvaluationOptions& options);
 
 /// Mean bad-1.0 percentage over the pairs that have ground truth (absent if none has).
 std::optional<double> mean_bad_percent(const std::vector<PairEvaluation>& pairs);
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

@@ -1,25 +1,17 @@
+// Scoring one site on hand-built zone maps and ground truth: counts, zones, errors, paths.
 #include "nav/terrain_grid.hpp"
-#include "support/run_marsokhod.hpp"
-#include "terrain_scoring.hpp"
 
-#include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/eval/terrain/terrain_scoring.hpp"
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <array>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
-#include <string>
-#include <variant>
 #include <vector>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 namespace {
-
-using marsokhod::testing::run_marsokhod;
 
 // A 4 x 1 strip: every pixel seen by both cameras, 5 m away (band 2-6 m).
 world::GroundTruth strip_truth() {
@@ -78,8 +70,9 @@ TEST(GroundTruthZones, GroundOnlyOneCameraSeesIsUnknownAndObstaclesAreSteps) {
   world::GroundTruth truth = strip_truth();
   truth.valid(2, 0) = 0; // the left camera sees it, the right one does not
   truth.obstacles(0, 0) = 255;
-  nav::TerrainPoints terrain{imaging::Image<float>(4, 1, 1, 5.0F), imaging::Image<float>(4, 1, 1, 0.0F),
-                             imaging::Image<float>(4, 1, 1, 0.0F), imaging::Image<float>(4, 1, 1, 5.0F), 4};
+  nav::TerrainPoints terrain{
+      imaging::Image<float>(4, 1, 1, 5.0F), imaging::Image<float>(4, 1, 1, 0.0F),
+      imaging::Image<float>(4, 1, 1, 0.0F), imaging::Image<float>(4, 1, 1, 5.0F), 4};
   for (int x = 0; x < 4; ++x)
     terrain.left(x, 0) = 0.4F * static_cast<float>(x); // 0.4 m apart: beyond each other's margin
   nav::ZoneOptions options;
@@ -96,8 +89,8 @@ TEST(ElevationErrors, AreTakenOnJudgedFreeGroundWhereTheNavigationHasAPoint) {
   truth.range(3, 0) = 7.0F; // band 6-10 m
   truth.obstacles(1, 0) = 255;
   const float kInf = std::numeric_limits<float>::infinity();
-  nav::TerrainPoints ours{imaging::Image<float>(4, 1), imaging::Image<float>(4, 1), imaging::Image<float>(4, 1),
-                          imaging::Image<float>(4, 1), 3};
+  nav::TerrainPoints ours{imaging::Image<float>(4, 1), imaging::Image<float>(4, 1),
+                          imaging::Image<float>(4, 1), imaging::Image<float>(4, 1), 3};
   for (int x = 0; x < 4; ++x) {
     truth.elevation(x, 0) = 0.10F;
     ours.elevation(x, 0) = 0.10F + 0.01F * static_cast<float>(x + 1);
@@ -158,56 +151,5 @@ TEST(Percent, IsNotANumberForAnEmptyWhole) {
   EXPECT_TRUE(std::isnan(percent(0, 0)));
 }
 
-TEST(EvalTerrainCommand, ReportsEveryKeyForTwoSmallSites) {
-  const auto result = run_marsokhod("eval terrain --seeds 3..4 --size 64 --terrain-size 16 --json");
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const auto json = nlohmann::json::parse(result.out);
-  EXPECT_EQ(json["seeds"], 2);
-  for (const char* key :
-       {"obstacle_recall", "false_prohibited", "false_prohibited_by_zone", "paths_found",
-        "unsafe_paths", "ground_truth_paths", "bands", "hazard_bands", "per_seed"})
-    EXPECT_TRUE(json.contains(key)) << key;
-  EXPECT_EQ(json["bands"].size(), 3U);
-  EXPECT_EQ(json["bands"][0]["band_m"], "2-6");
-  EXPECT_EQ(json["per_seed"].size(), 2U);
-  EXPECT_NE(result.err.find("seed 2/2"), std::string::npos) << result.err;
-}
-
-TEST(EvalTerrainCommand, PicturesShowEachSiteInThreePanels) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "marsokhod-eval-terrain-tests" / "pictures";
-  std::filesystem::remove_all(dir);
-  const auto result = run_marsokhod("eval terrain --seeds 3 --size 64 --terrain-size 16 "
-                                    "--pictures '" +
-                                    dir.string() + "'");
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const imaging::AnyImage picture = imaging::read_image(dir / "seed-3.png");
-  const auto* rgb = std::get_if<imaging::Image<std::uint8_t>>(&picture);
-  ASSERT_NE(rgb, nullptr);
-  EXPECT_EQ(rgb->width(), 3 * 64);
-  EXPECT_EQ(rgb->height(), 64);
-  EXPECT_EQ(rgb->channels(), 3);
-}
-
-TEST(EvalTerrainCommand, APicturesFolderThatCannotBeMadeIsARuntimeErrorNamingIt) {
-  const std::filesystem::path base =
-      std::filesystem::temp_directory_path() / "marsokhod-eval-terrain-tests" / "blocked";
-  std::filesystem::create_directories(base);
-  std::ofstream(base / "a-file") << "not a folder";
-  const std::filesystem::path dir = base / "a-file" / "pictures";
-  const auto result =
-      run_marsokhod("eval terrain --seeds 3 --size 64 --pictures '" + dir.string() + "'");
-  EXPECT_EQ(result.exit_code, 1);
-  EXPECT_NE(result.err.find(dir.string()), std::string::npos) << result.err;
-}
-
-TEST(EvalTerrainCommand, MalformedSeedRangesAreUsageErrors) {
-  for (const std::string seeds : {"5..3", "abc", "1..", "-1..2"}) {
-    const auto result = run_marsokhod("eval terrain --seeds " + seeds);
-    EXPECT_EQ(result.exit_code, 2) << seeds;
-    EXPECT_NE(result.err.find("--seeds"), std::string::npos) << result.err;
-  }
-}
-
 } // namespace
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

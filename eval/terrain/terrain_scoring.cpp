@@ -1,4 +1,5 @@
-#include "terrain_scoring.hpp"
+// Per-pixel scoring of zones, hazards and elevations by true range band, and unsafe paths.
+#include "marsokhod/eval/terrain/terrain_scoring.hpp"
 
 #include "marsokhod/nav/path/start_approach.hpp"
 
@@ -7,7 +8,7 @@
 #include <limits>
 #include <optional>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 namespace {
 
 std::optional<std::size_t> band_of(double range) {
@@ -50,30 +51,34 @@ BandTable score_bands(const nav::ZoneMap& zones, const world::GroundTruth& truth
 
 BandTable score_zones(const nav::ZoneMap& zones, const nav::ZoneMap& truth_zones,
                       const world::GroundTruth& truth) {
-  return score_bands(zones, truth, [&](int x, int y, BandCounts& counts) {
-    const bool prohibited = !zones.traversable(x, y);
-    if (truth.obstacles(x, y) != 0) {
-      ++counts.obstacle_pixels;
-      counts.obstacles_prohibited += prohibited ? 1 : 0;
-    } else if (truth_zones.traversable(x, y)) {
-      ++counts.free_pixels;
-      counts.free_prohibited += prohibited ? 1 : 0;
-      counts.free_prohibited_as[zones.zone(x, y) % nav::kZoneKinds] += prohibited ? 1 : 0;
-    }
-  });
+  return score_bands(
+      zones, truth,
+      [&](int x, int y, BandCounts& counts) {
+        const bool prohibited = !zones.traversable(x, y);
+        if (truth.obstacles(x, y) != 0) {
+          ++counts.obstacle_pixels;
+          counts.obstacles_prohibited += prohibited ? 1 : 0;
+        } else if (truth_zones.traversable(x, y)) {
+          ++counts.free_pixels;
+          counts.free_prohibited += prohibited ? 1 : 0;
+          counts.free_prohibited_as[zones.zone(x, y) % nav::kZoneKinds] += prohibited ? 1 : 0;
+        }
+      });
 }
 
 BandTable score_hazards(const nav::ZoneMap& zones, const world::GroundTruth& truth) {
-  return score_bands(zones, truth, [&](int x, int y, BandCounts& counts) {
-    const bool hazard = zones.hazard(x, y);
-    if (truth.obstacles(x, y) != 0) {
-      ++counts.obstacle_pixels;
-      counts.obstacles_prohibited += hazard ? 1 : 0;
-    } else {
-      ++counts.free_pixels;
-      counts.free_prohibited += hazard ? 1 : 0;
-    }
-  });
+  return score_bands(
+      zones, truth,
+      [&](int x, int y, BandCounts& counts) {
+        const bool hazard = zones.hazard(x, y);
+        if (truth.obstacles(x, y) != 0) {
+          ++counts.obstacle_pixels;
+          counts.obstacles_prohibited += hazard ? 1 : 0;
+        } else {
+          ++counts.free_pixels;
+          counts.free_prohibited += hazard ? 1 : 0;
+        }
+      });
 }
 
 nav::ZoneMap ground_truth_zones(const nav::TerrainPoints& terrain, const world::GroundTruth& truth,
@@ -122,4 +127,4 @@ double percent(std::uint64_t part, std::uint64_t whole) {
   return 100.0 * static_cast<double>(part) / static_cast<double>(whole);
 }
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

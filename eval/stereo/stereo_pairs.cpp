@@ -1,6 +1,7 @@
-#include "stereo_pairs.hpp"
+// The PAIRS.tsv reader: header columns, one entry a line, errors naming the file and line.
+#include "marsokhod/eval/stereo/stereo_pairs.hpp"
 
-#include "command.hpp"
+#include "marsokhod/eval/common/errors.hpp"
 
 #include <fmt/format.h>
 
@@ -10,7 +11,7 @@
 #include <map>
 #include <string_view>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 namespace {
 
 namespace fs = std::filesystem;
@@ -40,7 +41,7 @@ std::map<std::string, std::size_t, std::less<>> column_positions(const std::stri
     positions.emplace(names[i].substr(0, names[i].find('(')), i);
   for (std::string_view column : kRequired)
     if (positions.find(column) == positions.end())
-      throw CommandError(
+      throw EvaluationError(
           fmt::format("{}:1: the header lacks the column '{}'", index.string(), column));
   return positions;
 }
@@ -73,7 +74,7 @@ public:
     return path;
   }
   [[noreturn]] void fail(const std::string& problem) const {
-    throw CommandError(fmt::format("{}:{}: {}", index_.string(), line_, problem));
+    throw EvaluationError(fmt::format("{}:{}: {}", index_.string(), line_, problem));
   }
 
 private:
@@ -114,10 +115,10 @@ StereoPairEntry read_entry(const LineReader& reader, int line) {
 std::vector<StereoPairEntry> read_stereo_pairs(const fs::path& index) {
   std::ifstream stream(index);
   if (!stream)
-    throw CommandError(fmt::format("{}: cannot open the pair index", index.string()));
+    throw EvaluationError(fmt::format("{}: cannot open the pair index", index.string()));
   std::string header;
   if (!std::getline(stream, header))
-    throw CommandError(fmt::format("{}: the pair index is empty", index.string()));
+    throw EvaluationError(fmt::format("{}: the pair index is empty", index.string()));
   if (!header.empty() && header.back() == '\r')
     header.pop_back();
   const auto positions = column_positions(header, index);
@@ -131,8 +132,8 @@ std::vector<StereoPairEntry> read_stereo_pairs(const fs::path& index) {
     entries.push_back(read_entry(LineReader(index, line, split_tabs(text), positions), line));
   }
   if (entries.empty())
-    throw CommandError(fmt::format("{}: the pair index lists no pair", index.string()));
+    throw EvaluationError(fmt::format("{}: the pair index lists no pair", index.string()));
   return entries;
 }
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

@@ -1,3 +1,4 @@
+// Scoring one synthetic site: zones, hazards, elevation and path against the world's ground truth.
 #pragma once
 
 #include "marsokhod/nav/cycle/navigation.hpp"
@@ -8,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace marsokhod::apps {
+namespace marsokhod::eval {
 
 /// Ground distances over which the hazard detector is scored, metres.
 struct RangeBand {
@@ -16,6 +17,7 @@ struct RangeBand {
   double to_m = 0.0;
 };
 
+/// The bands every figure is given in, nearest first.
 inline constexpr std::array<RangeBand, 3> kTerrainBands{{{2.0, 6.0}, {6.0, 10.0}, {10.0, 14.0}}};
 
 /// Pixel counts of one band: ground-truth obstacles and how many of them the navigation
@@ -31,6 +33,7 @@ struct BandCounts {
   BandCounts& operator+=(const BandCounts& other);
 };
 
+/// The counts of every band, in kTerrainBands order.
 using BandTable = std::array<BandCounts, kTerrainBands.size()>;
 
 /// Scores the prohibited zones (hazards and the rover's margin: everything the planner may not
@@ -68,4 +71,4 @@ bool crosses_obstacle(const nav::PathPlan& plan, const nav::TerrainPoints& truth
 /// Share in percent, absent (NaN) for an empty denominator.
 double percent(std::uint64_t part, std::uint64_t whole);
 
-} // namespace marsokhod::apps
+} // namespace marsokhod::eval

@@ -1,0 +1,108 @@
+// Evaluation on synthetic terrain: world + navigation per seed, scored against ground truth.
+#include "marsokhod/eval/terrain/terrain_evaluation.hpp"
+
+#include "common/output_folder.hpp"
+
+#include "marsokhod/eval/common/errors.hpp"
+#include "marsokhod/eval/terrain/terrain_pictures.hpp"
+#include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/world/render/renderer.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <exception>
+#include <filesystem>
+#include <regex>
+
+namespace marsokhod::eval {
+namespace {
+
+void write_picture(const std::string& folder, std::uint64_t seed, const TerrainComparison& site) {
+  const std::filesystem::path path =
+      std::filesystem::path(folder) / fmt::format("seed-{}.png", seed);
+  try {
+    imaging::write_image(path, terrain_comparison_picture(site).view());
+  } catch (const std::exception& error) {
+    throw EvaluationError(error.what());
+  }
+}
+
+} // namespace
+
+SeedRange parse_seed_range(const std::string& text) {
+  static const std::regex pattern(R"(^(\d{1,18})(\.\.(\d{1,18}))?$)");
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern))
+    throw OptionError(fmt::format("'{}': expected A..B (e.g. 1..50) or a single seed", text));
+  const std::uint64_t first = std::stoull(match[1].str());
+  const std::uint64_t last = match[3].matched ? std::stoull(match[3].str()) : first;
+  if (last < first)
+    throw OptionError(fmt::format("'{}': the last seed is below the first", text));
+  if (last - first >= 10000)
+    throw OptionError(fmt::format("'{}': at most 10000 seeds at a time", text));
+  return {first, last};
+}
+
+SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainEvaluationOptions& cli) {
+  world::TerrainSettings settings;
+  settings.seed = seed;
+  settings.rock_cover = cli.rocks;
+  settings.size_m = cli.terrain_size;
+  const world::Terrain terrain = world::Terrain::generate(settings);
+  const world::LitSurface surface(terrain,
+                                  world::lighting_preset(world::parse_light_preset(cli.light)));
+  imaging::RigParameters rig_parameters;
+  rig_parameters.width_px = rig_parameters.height_px = cli.size;
+  const imaging::StereoRig rig(rig_parameters);
+  world::RenderOptions render;
+  render.noise_seed = seed;
+  const world::RoverPlacement placement = world::place_rover(terrain.height, world::RoverPose{});
+  const world::RenderedFrame frame =
+      world::Renderer(terrain).render_with_ground_truth(rig, placement, surface, render);
+
+  nav::NavigationOptions options;
+  options.attitude = placement.attitude;
+  const auto start = std::chrono::steady_clock::now();
+  const nav::NavigationResult result =
+      cli.oracle ? nav::navigate_disparity(frame.truth.disparity, frame.truth.valid, rig, options)
+                 : nav::navigate(frame.images.left, frame.images.right, rig, options);
+  SeedOutcome outcome;
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.seed = seed;
+  outcome.hazards = score_hazards(result.zones, frame.truth);
+  outcome.found = result.found();
+  outcome.reason = result.reason();
+  collect_elevation_errors(result.terrain, result.zones, frame.truth, outcome.elevation_errors);
+
+  const nav::TerrainPoints truth_terrain =
+      nav::reconstruct_terrain(frame.truth.disparity, rig, placement.attitude);
+  outcome.unsafe = result.found() && crosses_obstacle(result.plan, truth_terrain, frame.truth);
+  const nav::ZoneMap truth_zones = ground_truth_zones(truth_terrain, frame.truth, options.zones);
+  outcome.bands = score_zones(result.zones, truth_zones, frame.truth);
+  const nav::PathPlan truth_plan = nav::plan_path(truth_terrain, truth_zones, options.planner);
+  outcome.truth_found = truth_plan.found;
+  if (!cli.pictures.empty())
+    write_picture(
+        cli.pictures, seed,
+        {frame.images.left, result.zones, result.plan, truth_zones, truth_plan, frame.truth});
+  return outcome;
+}
+
+std::vector<SeedOutcome> evaluate_seeds(const SeedRange& range,
+                                        const TerrainEvaluationOptions& options,
+                                        const SeedProgress& progress) {
+  if (!options.pictures.empty())
+    prepare_output_folder(options.pictures);
+  std::vector<SeedOutcome> outcomes;
+  const std::uint64_t count = range.last - range.first + 1;
+  for (std::uint64_t seed = range.first; seed <= range.last; ++seed) {
+    if (progress)
+      progress(seed - range.first + 1, count, seed);
+    outcomes.push_back(evaluate_seed(seed, options));
+  }
+  return outcomes;
+}
+
+} // namespace marsokhod::eval
