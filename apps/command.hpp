@@ -1,3 +1,4 @@
+// The subcommand interface of the marsokhod command line and its exit-code errors.
 #pragma once
 
 #include <CLI/CLI.hpp>

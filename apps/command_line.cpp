@@ -1,3 +1,5 @@
+// The marsokhod command line: parses the subcommand, runs it, turns errors into exit codes.
+
 #include "command.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// The list of subcommands, in the order --help shows them.
+
 #include "command.hpp"
 
 namespace marsokhod::apps {

@@ -1,3 +1,5 @@
+// `marsokhod commstime`: the occam Commstime benchmark on one emulated T805.
+
 #include "command.hpp"
 
 #include "marsokhod/emulator/kernel/kernel.hpp"

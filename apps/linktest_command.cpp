@@ -1,3 +1,5 @@
+// `marsokhod linktest`: streams bytes over an emulated link and reports its throughput.
+
 #include "command.hpp"
 
 #include "marsokhod/emulator/links/link_stream.hpp"

@@ -1,3 +1,5 @@
+// The marsokhod executable's entry point.
+
 #include "command.hpp"
 
 int main(int argc, char** argv) {

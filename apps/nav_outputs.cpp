@@ -1,3 +1,5 @@
+// The files `marsokhod nav` writes: disparity, range, elevation, zones, path overlay, path.json.
+
 #include "nav_outputs.hpp"
 
 #include "command.hpp"

@@ -1,3 +1,4 @@
+// The files `marsokhod nav` writes, and the pictures of zones and of the path.
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"

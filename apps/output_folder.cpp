@@ -1,3 +1,5 @@
+// Creating a command's output folder, with a message naming it when that fails.
+
 #include "command.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,5 @@
+// `marsokhod rig`: the stereo rig's geometry (blind zone, ground disparity, stone parallax).
+
 #include "command.hpp"
 
 #include "marsokhod/imaging/rig/camera.hpp"

@@ -1,3 +1,5 @@
+// `marsokhod world`: renders a synthetic stereo pair with ground truth into a folder.
+
 #include "command.hpp"
 
 #include "marsokhod/imaging/rig/camera.hpp"

@@ -1,3 +1,5 @@
+// Tests: `marsokhod calibrate` on a misaligned rendered pair, and its refusals of bad pairs.
+
 #include "support/run_marsokhod.hpp"
 
 #include <gtest/gtest.h>

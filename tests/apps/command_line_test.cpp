@@ -1,3 +1,5 @@
+// Tests: the command line's help, unknown subcommands and exit codes.
+
 #include "support/run_marsokhod.hpp"
 
 #include <gtest/gtest.h>

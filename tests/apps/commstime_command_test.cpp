@@ -1,3 +1,5 @@
+// Tests: `marsokhod commstime`, its JSON and trace, and its errors for bad platforms and options.
+
 #include "support/run_marsokhod.hpp"
 
 #include <gtest/gtest.h>

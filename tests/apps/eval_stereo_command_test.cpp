@@ -1,3 +1,4 @@
+// Tests: `marsokhod eval stereo` on real and synthetic pairs, its figures and its errors.
 // `marsokhod eval stereo`: the Middlebury bad-1.0 metric over a PAIRS.tsv index, on the real
 // pairs and on synthetic ones (8- and 16-bit ground truth, a pair without ground truth), and
 // clear errors naming the index file and line for bad indexes.

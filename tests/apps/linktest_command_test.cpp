@@ -1,3 +1,5 @@
+// Tests: `marsokhod linktest` against the data book, its traces, and its errors.
+
 #include "support/run_marsokhod.hpp"
 
 #include <gtest/gtest.h>

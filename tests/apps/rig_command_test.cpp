@@ -1,3 +1,5 @@
+// Tests: `marsokhod rig`, the paper rig it describes, and bad rig files and options.
+
 #include "support/run_marsokhod.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// Tests: `marsokhod world`, the files it writes, determinism and its errors.
+
 #include "support/run_marsokhod.hpp"
 
 #include "marsokhod/imaging/image/image_io.hpp"

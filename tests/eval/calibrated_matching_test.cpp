@@ -1,6 +1,7 @@
+// Tests: vertical parallax calibration restoring row matching on rendered, misaligned pairs.
 // Vertical parallax calibration on rendered pairs (paper, section 2): a right camera tilted by
 // a known angle spoils row matching, and the map calibrated on one site restores it on another.
-// In tests/world because it needs the world's renderer and its exact ground truth.
+// In tests/eval because it needs the world's renderer and its exact ground truth.
 
 #include "nav/stereo_test_support.hpp"
 

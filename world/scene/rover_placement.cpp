@@ -1,3 +1,5 @@
+// Placing the rover on the terrain: the wheels' contact points give its height, pitch and roll.
+
 #include "marsokhod/world/scene/rover_placement.hpp"
 
 #include <cmath>

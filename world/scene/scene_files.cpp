@@ -1,3 +1,5 @@
+// Writing a rendered scene: the pair, its ground truth, their previews and scene.json.
+
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/pictures/colormap.hpp"
 #include "marsokhod/world/scene/scene.hpp"

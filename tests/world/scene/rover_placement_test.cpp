@@ -1,3 +1,5 @@
+// Tests: the rover placement on the terrain (height, pitch, roll) by hand geometry.
+
 #include "marsokhod/world/scene/rover_placement.hpp"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// RoverPose and RoverPlacement: the rover set down on the terrain, its pitch and roll.
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"

@@ -1,3 +1,4 @@
+// SceneDescription and writing a rendered scene's files (images, ground truth, scene.json).
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"
