@@ -3,7 +3,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -33,10 +32,6 @@ struct Command {
   CLI::App* app = nullptr;
   std::function<int()> run;
 };
-
-/// Creates `folder` and its parents when missing; throws CommandError naming the folder when it
-/// cannot be created or is not a directory.
-void prepare_output_folder(const std::filesystem::path& folder);
 
 /// Each subcommand file defines one of these; commands.cpp lists them in --help order.
 using CommandFactory = Command (*)(CLI::App& parent);

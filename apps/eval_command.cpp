@@ -17,12 +17,11 @@ namespace {
 // Every evaluation, in --help order.
 const std::vector<CommandFactory> kEvaluations = {add_stereo_evaluation, add_terrain_evaluation};
 
-// Bad files and data are runtime errors (exit 1), bad option values usage errors (exit 2).
+// Bad option values are usage errors (exit 2). Bad files and data (EvaluationError) reach the
+// command line as any other runtime error does, and exit 1.
 int run_evaluation(const Command& evaluation) {
   try {
     return evaluation.run();
-  } catch (const eval::EvaluationError& error) {
-    throw CommandError(error.what());
   } catch (const eval::OptionError& error) {
     throw UsageError(error.what());
   }

@@ -4,6 +4,7 @@
 #include "nav_outputs.hpp"
 
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/imaging/image/output_folder.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
@@ -155,7 +156,7 @@ int run_nav(const NavCli& cli) {
   std::optional<imaging::Image<float>> given;
   if (cli.disparity_file)
     given = read_disparity(*cli.disparity_file, left.width(), left.height());
-  prepare_output_folder(cli.out);
+  imaging::prepare_output_folder(cli.out);
 
   const auto start = std::chrono::steady_clock::now();
   nav::NavigationResult result;

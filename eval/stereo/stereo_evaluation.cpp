@@ -1,11 +1,10 @@
 // Stereo evaluation: reading each pair and its ground truth, matching, timing and scoring.
 #include "marsokhod/eval/stereo/stereo_evaluation.hpp"
 
-#include "common/output_folder.hpp"
-
 #include "marsokhod/eval/common/errors.hpp"
 #include "marsokhod/eval/stereo/stereo_pairs.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/imaging/image/output_folder.hpp"
 #include "marsokhod/imaging/pictures/colormap.hpp"
 #include "marsokhod/nav/stereo/disparity_metrics.hpp"
 
@@ -105,7 +104,7 @@ int search_range(const StereoEvaluationOptions& options, const StereoPairEntry& 
 void write_outputs(const StereoEvaluationOptions& options, const std::string& name,
                    const imaging::Image<float>& disparity) {
   const fs::path dir = options.out_dir;
-  prepare_output_folder(dir);
+  imaging::prepare_output_folder(dir);
   imaging::write_image(dir / (name + "_disparity.pfm"), disparity.view());
   imaging::ColormapOptions colour;
   colour.min_value = 0.0F;

@@ -1,11 +1,10 @@
 // Evaluation on synthetic terrain: world + navigation per seed, scored against ground truth.
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
 
-#include "common/output_folder.hpp"
-
 #include "marsokhod/eval/common/errors.hpp"
 #include "marsokhod/eval/terrain/terrain_pictures.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/imaging/image/output_folder.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/world/render/renderer.hpp"
 
@@ -94,7 +93,7 @@ std::vector<SeedOutcome> evaluate_seeds(const SeedRange& range,
                                         const TerrainEvaluationOptions& options,
                                         const SeedProgress& progress) {
   if (!options.pictures.empty())
-    prepare_output_folder(options.pictures);
+    imaging::prepare_output_folder(options.pictures);
   std::vector<SeedOutcome> outcomes;
   const std::uint64_t count = range.last - range.first + 1;
   for (std::uint64_t seed = range.first; seed <= range.last; ++seed) {

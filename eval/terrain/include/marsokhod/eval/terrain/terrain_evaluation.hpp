@@ -56,7 +56,7 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainEvaluationOptions& op
 using SeedProgress =
     std::function<void(std::uint64_t position, std::uint64_t count, std::uint64_t seed)>;
 
-/// Creates options.pictures when set (throws EvaluationError naming it when it cannot be made),
+/// Creates options.pictures when set (throws std::runtime_error naming it when it cannot be made),
 /// then evaluates every seed of the range in order.
 std::vector<SeedOutcome> evaluate_seeds(const SeedRange& range,
                                         const TerrainEvaluationOptions& options,
