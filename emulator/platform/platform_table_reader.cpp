@@ -2,11 +2,12 @@
 
 #include "platform/platform_table_reader.hpp"
 
+#include "marsokhod/io/files/input_error.hpp"
+#include "marsokhod/io/formats/toml_file.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 namespace marsokhod::emulator::detail {
@@ -123,16 +124,10 @@ int TableReader::line_of(std::string_view key) const {
 }
 
 toml::table parse_toml_file(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw PlatformError(file, 0, "", "cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
   try {
-    return toml::parse(text.str(), file);
-  } catch (const toml::parse_error& error) {
-    throw PlatformError(file, static_cast<int>(error.source().begin.line), "",
-                        std::string(error.description()));
+    return io::parse_toml_file(file, "platform file");
+  } catch (const io::InputError& error) {
+    throw PlatformError(file, error.line(), "", error.problem());
   }
 }
 

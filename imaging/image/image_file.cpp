@@ -2,14 +2,14 @@
 
 #include "image/image_codec.hpp"
 
+#include "marsokhod/io/files/file_writer.hpp"
+#include "marsokhod/io/files/output_error.hpp"
+
 #include <fmt/format.h>
 
-#include <atomic>
 #include <cerrno>
-#include <fcntl.h>
 #include <fstream>
 #include <system_error>
-#include <unistd.h>
 
 namespace marsokhod::imaging::detail {
 namespace {
@@ -22,33 +22,6 @@ constexpr std::uintmax_t kMaxImageFileBytes =
 
 std::string errno_text(int error) {
   return std::generic_category().message(error);
-}
-
-bool write_fully(int fd, std::span<const std::uint8_t> bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t written = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (written < 0 && errno == EINTR)
-      continue;
-    if (written <= 0)
-      return false;
-    done += static_cast<std::size_t>(written);
-  }
-  return true;
-}
-
-// A fresh name beside the target; the process id and a counter keep concurrent writers apart.
-int create_temporary(const fs::path& target, fs::path& temporary) {
-  static std::atomic<unsigned> counter{0};
-  for (int attempt = 0; attempt < 100; ++attempt) {
-    temporary = target.parent_path() /
-                fmt::format(".{}.tmp{}-{}", target.filename().string(), ::getpid(), counter++);
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0 || errno != EEXIST)
-      return fd;
-  }
-  errno = EEXIST;
-  return -1;
 }
 
 } // namespace
@@ -93,30 +66,10 @@ std::vector<std::uint8_t> read_file_bytes(const fs::path& path) {
 }
 
 void write_file_atomically(const fs::path& path, std::span<const std::uint8_t> bytes) {
-  const std::string name = path.string();
-  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code error;
-  if (!fs::is_directory(folder, error))
-    fail(name, fmt::format("folder {} does not exist", folder.string()));
-  if (fs::is_directory(path, error))
-    fail(name, "is a directory");
-
-  fs::path temporary;
-  const int fd =
-      create_temporary(path.parent_path().empty() ? fs::path(".") / path : path, temporary);
-  if (fd < 0)
-    fail(name, fmt::format("cannot create a file in {}: {}", folder.string(), errno_text(errno)));
-  const bool written = write_fully(fd, bytes);
-  const int write_errno = errno;
-  const bool closed = ::close(fd) == 0;
-  if (!written || !closed) {
-    ::unlink(temporary.c_str());
-    fail(name, fmt::format("cannot write: {}", errno_text(written ? errno : write_errno)));
-  }
-  if (::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int rename_errno = errno;
-    ::unlink(temporary.c_str());
-    fail(name, fmt::format("cannot write: {}", errno_text(rename_errno)));
+  try {
+    io::write_file_atomically(path, bytes);
+  } catch (const io::OutputError& error) {
+    throw ImageError(error.what());
   }
 }
 

@@ -1,12 +1,13 @@
 // A project TOML file (rig, calibration) being read, with errors naming file and line.
 #pragma once
 
+#include "marsokhod/io/files/input_error.hpp"
+#include "marsokhod/io/formats/toml_file.hpp"
+
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <string_view>
 
@@ -23,14 +24,12 @@ public:
 
   const std::filesystem::path& path() const { return path_; }
 
-  /// The whole file, parsed.
+  /// The whole file, parsed (read through the bounded reader: regular files only, size limit).
   toml::table parse() const {
-    const std::string text = read_text();
     try {
-      return toml::parse(text, path_.string());
-    } catch (const toml::parse_error& error) {
-      fail(error.source(), fmt::format("TOML syntax error: {} in \"{}\"", error.description(),
-                                       line_of(text, error.source().begin.line)));
+      return io::parse_toml_file(path_, kind_ + " file");
+    } catch (const io::InputError& error) {
+      throw Error(error.what());
     }
   }
 
@@ -44,25 +43,6 @@ public:
   }
 
 private:
-  std::string read_text() const {
-    std::ifstream in(path_, std::ios::binary);
-    if (!in || std::filesystem::is_directory(path_))
-      fail(fmt::format("cannot open {} file", kind_));
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  // The offending line, so a syntax error also shows the key it is about.
-  static std::string line_of(const std::string& text, toml::source_index line) {
-    std::istringstream lines(text);
-    std::string current;
-    for (toml::source_index n = 1; std::getline(lines, current); ++n)
-      if (n == line)
-        return current;
-    return {};
-  }
-
   std::filesystem::path path_;
   std::string kind_;
 };
