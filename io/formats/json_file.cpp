@@ -48,7 +48,7 @@ nlohmann::json parse_json_file(const std::filesystem::path& path, std::string_vi
                                  kMaxJsonDepth, kind));
   try {
     return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
+  } catch (const nlohmann::json::exception& error) { // parse_error, and out_of_range for 1e999
     throw InputError(path.string(), fmt::format("not a {}: {}", kind, error.what()));
   }
 }

@@ -64,6 +64,13 @@ TEST(JsonFile, SyntaxErrorNamesTheFile) {
   fs::remove(path);
 }
 
+TEST(JsonFile, NumberTooLargeForADoubleNamesTheFile) {
+  const fs::path path = write_temp("huge.json", R"({"a": 1e999})");
+  const std::string message = error_of([&] { parse_json_file(path, "test file"); });
+  EXPECT_EQ(message.rfind(path.string() + ": not a test file", 0), 0U) << message;
+  fs::remove(path);
+}
+
 TEST(JsonFile, DeepNestingIsRefusedBeforeParsing) {
   const fs::path path = write_temp("deep.json", std::string(100000, '['));
   const std::string message = error_of([&] { parse_json_file(path, "test file"); });

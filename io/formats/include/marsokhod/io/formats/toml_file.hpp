@@ -10,7 +10,7 @@
 namespace marsokhod::io {
 
 /// `path` parsed as TOML. kind names the file ("rig file"). An unreadable file and a syntax
-/// error are InputErrors: "FILE:LINE:COLUMN: TOML syntax error: ... in \"the line\"".
+/// error are InputErrors: "FILE:LINE: TOML syntax error at column C: ... in \"the line\"".
 toml::table parse_toml_file(const std::filesystem::path& path, std::string_view kind);
 
 /// "FILE:LINE:COLUMN: problem" for a place in a TOML file (or "FILE: problem" without one).
