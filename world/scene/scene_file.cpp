@@ -67,8 +67,8 @@ private:
 
   void require_object(const nlohmann::json& node, const std::string& what) const {
     if (!node.is_object())
-      fail(fmt::format("not a scene file: {} must be an object (got {})", what,
-                       json_type_name(node)));
+      fail(fmt::format("not a scene file with placement.attitude: {} must be an object (got {})",
+                       what, json_type_name(node)));
   }
 
   // `node` is an object; `name` is the key's full dotted name for messages.
@@ -76,7 +76,7 @@ private:
                                const std::string& name) const {
     const auto found = node.find(std::string(key));
     if (found == node.end())
-      fail(fmt::format("not a scene file: it has no key '{}'", name));
+      fail(fmt::format("not a scene file with placement.attitude: it has no key '{}'", name));
     return *found;
   }
 

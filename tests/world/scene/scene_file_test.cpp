@@ -87,16 +87,19 @@ TEST_F(SceneFile, ADeviceOrAFifoIsRefusedWithoutBeingRead) {
 TEST_F(SceneFile, ADocumentWithoutTheAttitudeNamesTheMissingKey) {
   const fs::path file = write(R"({"placement": {"pose": {}}})");
   EXPECT_EQ(error_of(file),
-            file.string() + ": not a scene file: it has no key 'placement.attitude'");
+            file.string() +
+                ": not a scene file with placement.attitude: it has no key 'placement.attitude'");
   const fs::path no_roll = write(R"({"placement": {"attitude": {"pitch_deg": 1}}})");
-  EXPECT_EQ(error_of(no_roll),
-            no_roll.string() + ": not a scene file: it has no key 'placement.attitude.roll_deg'");
+  EXPECT_EQ(error_of(no_roll), no_roll.string() + ": not a scene file with placement.attitude: it "
+                                                  "has no key 'placement.attitude.roll_deg'");
   const fs::path array = write("[1, 2]");
-  EXPECT_EQ(error_of(array),
-            array.string() + ": not a scene file: the document must be an object (got an array)");
+  EXPECT_EQ(error_of(array), array.string() + ": not a scene file with placement.attitude: the "
+                                              "document must be an object (got an array)");
   const fs::path flat = write(R"({"placement": {"attitude": 3}})");
-  EXPECT_EQ(error_of(flat), flat.string() + ": not a scene file: key 'placement.attitude' must be "
-                                            "an object (got a number)");
+  EXPECT_EQ(error_of(flat),
+            flat.string() +
+                ": not a scene file with placement.attitude: key 'placement.attitude' must be "
+                "an object (got a number)");
 }
 
 TEST_F(SceneFile, TextThatIsNoJsonAndAStringPitchAreRefused) {
