@@ -89,7 +89,7 @@ std::string HeaderScanner::read_token(std::string_view what, std::size_t max_len
     token.push_back(static_cast<char>(peek()));
     ++position_;
   }
-  if (token.empty())
+  if (token.empty() || (cut_ && at_end()))
     fail_here(fmt::format("expected {}, found {}", what, describe_next()));
   return token;
 }
@@ -111,6 +111,10 @@ std::string HeaderScanner::describe_next() const {
 }
 
 void HeaderScanner::fail_here(std::string_view problem) const {
+  if (cut_ && at_end())
+    fail(name_, fmt::format("the header (comments included) runs past the first {} bytes; longer "
+                            "headers are not read",
+                            kImageHeaderWindow));
   fail(name_, problem);
 }
 

@@ -16,8 +16,11 @@ namespace marsokhod::imaging::detail {
 /// specification says, even in the middle of a number.
 class HeaderScanner {
 public:
-  HeaderScanner(std::span<const std::uint8_t> bytes, std::string_view name, bool comments)
-      : bytes_(bytes), name_(name), comments_(comments) {}
+  /// `cut`: the file goes on beyond `bytes` (its first kImageHeaderWindow bytes), so running
+  /// out of bytes means the header is too long, not that the file is truncated.
+  HeaderScanner(std::span<const std::uint8_t> bytes, std::string_view name, bool comments,
+                bool cut = false)
+      : bytes_(bytes), name_(name), comments_(comments), cut_(cut) {}
 
   /// Offset of the next unread byte.
   std::size_t position() const { return position_; }
@@ -44,6 +47,7 @@ private:
   std::span<const std::uint8_t> bytes_;
   std::string_view name_;
   bool comments_;
+  bool cut_;
   std::size_t position_ = 0;
 };
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -41,9 +42,46 @@ std::vector<std::uint8_t> encode_png(ImageView<const std::uint8_t> image, std::s
 std::vector<std::uint8_t> encode_png(ImageView<const std::uint16_t> image, std::string_view name);
 std::vector<std::uint8_t> encode_pfm(ImageView<const float> image);
 
-/// The whole content of a regular file; ImageError for a missing file, a directory, an empty
-/// file or a read failure.
-std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& path);
+/// How many bytes of a file are read before its header tells how many more the image needs.
+/// A PGM, PPM or PFM header (comments included) must end within them.
+inline constexpr std::size_t kImageHeaderWindow = std::size_t{64} << 10;
+
+/// An image file opened for reading in order, never more than asked: regular files only
+/// (FIFOs and devices are refused without blocking), ImageError for a missing file, a
+/// directory, an empty file or a read failure.
+class ImageFileReader {
+public:
+  explicit ImageFileReader(const std::filesystem::path& path);
+  ImageFileReader(const ImageFileReader&) = delete;
+  ImageFileReader& operator=(const ImageFileReader&) = delete;
+  ~ImageFileReader();
+
+  const std::string& name() const { return name_; }
+  /// The file's size when it was opened.
+  std::uint64_t size() const { return size_; }
+  /// Appends the next bytes of the file to `bytes` until it holds `count` bytes or the file
+  /// ends; `bytes` must hold exactly what was read so far.
+  void read_up_to(std::vector<std::uint8_t>& bytes, std::size_t count);
+  /// Reads `length` more bytes into `out`; how many there were (fewer at the end of the file).
+  std::size_t read_next(std::uint8_t* out, std::size_t length);
+
+private:
+  std::string name_;
+  int fd_ = -1;
+  std::uint64_t size_ = 0;
+  std::uint64_t position_ = 0;
+};
+
+/// Bytes a PGM/PPM (pnm) or PFM file needs, header plus raster, from its first bytes `head`.
+/// `head_is_cut`: the file goes on beyond `head`, so a header running to its end is too long.
+std::size_t pnm_file_extent(std::span<const std::uint8_t> head, std::string_view name,
+                            bool head_is_cut);
+std::size_t pfm_file_extent(std::span<const std::uint8_t> head, std::string_view name,
+                            bool head_is_cut);
+
+/// A PNG streamed from `file`, whose first bytes `head` were read already: libpng is fed only
+/// what it asks for, and at most what the header's image can need.
+DecodedImage decode_png_file(std::span<const std::uint8_t> head, ImageFileReader& file);
 
 /// Writes through a temporary file in the same folder and renames it over `path`, so readers
 /// never see a half-written file; ImageError when the folder is missing or the write fails.

@@ -38,6 +38,28 @@ DecodedImage decode_any(std::span<const std::uint8_t> bytes, std::string_view na
   fail(name, "unknown image format (expected PGM/PPM P5/P6, PNG or PFM Pf/PF)");
 }
 
+// Reads only what the header says the image needs: the first kImageHeaderWindow bytes, then
+// for PGM, PPM and PFM the rest of the raster, for PNG what libpng asks for. Bytes after the
+// image are neither read nor kept.
+DecodedImage decode_file(const std::filesystem::path& path) {
+  detail::ImageFileReader file(path);
+  const std::string& name = file.name();
+  std::vector<std::uint8_t> bytes;
+  file.read_up_to(bytes, detail::kImageHeaderWindow);
+  const bool cut = bytes.size() < file.size();
+  if (starts_with(bytes, "\x89PNG"))
+    return detail::decode_png_file(bytes, file);
+  if (starts_with(bytes, "P5") || starts_with(bytes, "P6")) {
+    file.read_up_to(bytes, detail::pnm_file_extent(bytes, name, cut));
+    return detail::decode_pnm(bytes, name);
+  }
+  if (starts_with(bytes, "Pf") || starts_with(bytes, "PF")) {
+    file.read_up_to(bytes, detail::pfm_file_extent(bytes, name, cut));
+    return detail::decode_pfm(bytes, name);
+  }
+  return decode_any(bytes, name);
+}
+
 std::uint8_t to_8_bit(unsigned sample, unsigned maxval) {
   return static_cast<std::uint8_t>((sample * 255U + maxval / 2) / maxval);
 }
@@ -103,12 +125,12 @@ AnyImage decode_image(std::span<const std::uint8_t> bytes, std::string_view name
 }
 
 AnyImage read_image(const std::filesystem::path& path) {
-  return decode_image(detail::read_file_bytes(path), path.string());
+  return decode_file(path).pixels;
 }
 
 Image<std::uint8_t> read_gray8(const std::filesystem::path& path) {
   const std::string name = path.string();
-  DecodedImage decoded = decode_any(detail::read_file_bytes(path), name);
+  DecodedImage decoded = decode_file(path);
   if (auto* image = std::get_if<Image<std::uint8_t>>(&decoded.pixels)) {
     if (image->channels() == 1 && decoded.maxval == 255)
       return std::move(*image);
@@ -121,7 +143,7 @@ Image<std::uint8_t> read_gray8(const std::filesystem::path& path) {
 
 Image<float> read_pfm(const std::filesystem::path& path) {
   const std::string name = path.string();
-  DecodedImage decoded = decode_any(detail::read_file_bytes(path), name);
+  DecodedImage decoded = decode_file(path);
   auto* image = std::get_if<Image<float>>(&decoded.pixels);
   if (image == nullptr)
     fail(name, "expected a one-channel PFM (Pf), found an integer image");

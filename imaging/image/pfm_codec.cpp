@@ -40,25 +40,56 @@ float load_float(const std::uint8_t* bytes, bool little_endian) {
   return std::bit_cast<float>(bits);
 }
 
-} // namespace
+struct PfmHeader {
+  int channels = 1;
+  int width = 0;
+  int height = 0;
+  double scale = 0.0;
+  std::size_t raster_offset = 0;
 
-DecodedImage decode_pfm(std::span<const std::uint8_t> bytes, std::string_view name) {
+  std::size_t row_samples() const {
+    return static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
+  }
+  std::size_t raster_bytes() const {
+    return row_samples() * static_cast<std::size_t>(height) * sizeof(float);
+  }
+};
+
+PfmHeader read_pfm_header(std::span<const std::uint8_t> bytes, std::string_view name,
+                          bool cut = false) {
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != 'f' && bytes[1] != 'F'))
     fail(name, "not a PFM file (magic Pf or PF expected)");
-  const int channels = bytes[1] == 'F' ? 3 : 1;
-  HeaderScanner scanner(bytes.subspan(2), name, /*comments=*/false);
+  PfmHeader header;
+  header.channels = bytes[1] == 'F' ? 3 : 1;
+  HeaderScanner scanner(bytes.subspan(2), name, /*comments=*/false, cut);
   scanner.skip_separator("the magic number");
-  const int width = scanner.read_number("width", 1, kMaxImageSide);
+  header.width = scanner.read_number("width", 1, kMaxImageSide);
   scanner.skip_separator("the width");
-  const int height = scanner.read_number("height", 1, kMaxImageSide);
+  header.height = scanner.read_number("height", 1, kMaxImageSide);
   scanner.skip_separator("the height");
-  const double scale = parse_scale(scanner.read_token("scale", kMaxScaleLength), name);
+  header.scale = parse_scale(scanner.read_token("scale", kMaxScaleLength), name);
   scanner.expect_single_whitespace("the scale");
+  header.raster_offset = 2 + scanner.position();
+  return header;
+}
 
-  const std::span<const std::uint8_t> raster = bytes.subspan(2 + scanner.position());
-  const std::size_t row_samples =
-      static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
-  const std::size_t expected = row_samples * static_cast<std::size_t>(height) * sizeof(float);
+} // namespace
+
+std::size_t pfm_file_extent(std::span<const std::uint8_t> head, std::string_view name,
+                            bool head_is_cut) {
+  const PfmHeader header = read_pfm_header(head, name, head_is_cut);
+  return header.raster_offset + header.raster_bytes();
+}
+
+DecodedImage decode_pfm(std::span<const std::uint8_t> bytes, std::string_view name) {
+  const PfmHeader header = read_pfm_header(bytes, name);
+  const int width = header.width;
+  const int height = header.height;
+  const int channels = header.channels;
+  const double scale = header.scale;
+  const std::span<const std::uint8_t> raster = bytes.subspan(header.raster_offset);
+  const std::size_t row_samples = header.row_samples();
+  const std::size_t expected = header.raster_bytes();
   if (raster.size() < expected)
     fail(name,
          fmt::format("truncated pixel data: expected {} bytes, found {}", expected, raster.size()));

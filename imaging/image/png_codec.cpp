@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <png.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <csetjmp>
 #include <cstdio>
@@ -21,6 +23,9 @@ struct PngIo {
   const std::uint8_t* input = nullptr;
   std::size_t input_size = 0;
   std::size_t input_offset = 0;
+  ImageFileReader* file = nullptr; ///< where the bytes after `input` come from, if anywhere
+  std::uint64_t fed = 0;           ///< bytes given to libpng so far
+  std::uint64_t feed_limit = ~std::uint64_t{0};
   std::vector<std::uint8_t>* output = nullptr;
   char message[160] = {};
   char first_warning[160] = {};
@@ -50,12 +55,31 @@ std::string corrupt(const PngIo& io) {
   return fmt::format("corrupt PNG: {} ({})", io.message, io.first_warning);
 }
 
+// Reads the file in its own frame, so that an ImageError never crosses libpng's frames.
+bool read_file(ImageFileReader& file, png_bytep out, png_size_t length, char* message,
+               std::size_t message_size) {
+  try {
+    return file.read_next(out, length) == length;
+  } catch (const std::exception& error) {
+    std::snprintf(message, message_size, "%s", error.what());
+    return false;
+  }
+}
+
 void read_callback(png_structp png, png_bytep out, png_size_t length) {
   auto* io = static_cast<PngIo*>(png_get_io_ptr(png));
-  if (length > io->input_size - io->input_offset)
-    png_error(png, "truncated PNG data");
-  std::memcpy(out, io->input + io->input_offset, length);
-  io->input_offset += length;
+  if (length > io->feed_limit - io->fed)
+    png_error(png, "more data than the image in its header can need");
+  io->fed += length;
+  const std::size_t buffered = std::min(length, io->input_size - io->input_offset);
+  std::memcpy(out, io->input + io->input_offset, buffered);
+  io->input_offset += buffered;
+  if (buffered == length)
+    return;
+  char message[160] = "truncated PNG data";
+  if (io->file == nullptr ||
+      !read_file(*io->file, out + buffered, length - buffered, message, sizeof message))
+    png_error(png, message);
 }
 
 bool append(std::vector<std::uint8_t>& bytes, const std::uint8_t* data, std::size_t length) {
@@ -131,12 +155,15 @@ private:
   png_infop info_;
 };
 
-void check_plausible_size(const PngHeader& header, std::size_t file_size, std::string_view name) {
+std::uint64_t raw_bytes(const PngHeader& header) {
   const std::uint64_t row_bits = std::uint64_t{header.width} *
                                  static_cast<std::uint64_t>(header.bit_depth) *
                                  static_cast<std::uint64_t>(header.file_channels);
-  const std::uint64_t raw_bytes = (row_bits + 7) / 8 * header.height;
-  if (raw_bytes > kMaxDeflateRatio * file_size)
+  return (row_bits + 7) / 8 * header.height;
+}
+
+void check_plausible_size(const PngHeader& header, std::uint64_t file_size, std::string_view name) {
+  if (raw_bytes(header) > kMaxDeflateRatio * file_size)
     fail(name, fmt::format("corrupt PNG: {} bytes cannot hold {}x{} pixels", file_size,
                            header.width, header.height));
 }
@@ -161,12 +188,50 @@ Image<T> read_pixels(png_structp png, png_infop info, PngIo& io, std::string_vie
   return image;
 }
 
-} // namespace
+// Deflate's stored blocks add 5 bytes per 65535, and each chunk 12 bytes; twice the raw size
+// (one filter byte per row included) plus room for ancillary chunks is more than any honest
+// file holds for its image, and bounds what a streamed file can make us read.
+constexpr std::uint64_t kAncillaryAllowance = std::uint64_t{16} << 20;
 
-DecodedImage decode_png(std::span<const std::uint8_t> bytes, std::string_view name) {
+std::uint64_t feed_limit(const PngHeader& header) {
+  return 2 * (raw_bytes(header) + header.height) + kAncillaryAllowance;
+}
+
+std::uint32_t big_endian_at(std::span<const std::uint8_t> bytes, std::size_t offset) {
+  std::uint32_t value = 0;
+  for (std::size_t i = 0; i < 4; ++i)
+    value = (value << 8) | bytes[offset + i];
+  return value;
+}
+
+// The same bound before libpng has read anything: png_read_info reads every chunk before the
+// first IDAT, so the limit must hold from the first byte. It is taken from the IHDR, which the
+// PNG specification places right after the signature; libpng checks that chunk itself.
+std::uint64_t initial_feed_limit(std::span<const std::uint8_t> head) {
+  constexpr std::size_t kIhdrEnd = 8 + 8 + 13;
+  PngHeader header;
+  header.width = kMaxImageSide;
+  header.height = kMaxImageSide;
+  header.bit_depth = 16;
+  header.file_channels = 4;
+  if (head.size() >= kIhdrEnd && std::equal(head.begin() + 12, head.begin() + 16, "IHDR")) {
+    header.width = std::min<png_uint_32>(big_endian_at(head, 16), kMaxImageSide);
+    header.height = std::min<png_uint_32>(big_endian_at(head, 20), kMaxImageSide);
+    header.bit_depth = std::min<int>(head[24], 16);
+    // Grey, -, RGB, palette, grey + alpha, -, RGB + alpha.
+    constexpr std::array<int, 7> kChannels = {1, 4, 3, 1, 2, 4, 4};
+    header.file_channels = head[25] < kChannels.size() ? kChannels[head[25]] : 4;
+  }
+  return feed_limit(header);
+}
+
+DecodedImage decode(std::span<const std::uint8_t> bytes, ImageFileReader* file,
+                    std::string_view name) {
   PngIo io;
   io.input = bytes.data();
   io.input_size = bytes.size();
+  io.file = file;
+  io.feed_limit = initial_feed_limit(bytes);
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &io, on_error, on_warning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   ReadGuard guard(png, info);
@@ -178,7 +243,8 @@ DecodedImage decode_png(std::span<const std::uint8_t> bytes, std::string_view na
   if (!read_header(png, info, &header))
     fail(name, corrupt(io));
   check_image_size(name, header.width, header.height);
-  check_plausible_size(header, bytes.size(), name);
+  check_plausible_size(header, file != nullptr ? file->size() : bytes.size(), name);
+  io.feed_limit = feed_limit(header);
   if (!configure_read(png, info, &header))
     fail(name, corrupt(io));
 
@@ -192,6 +258,16 @@ DecodedImage decode_png(std::span<const std::uint8_t> bytes, std::string_view na
     decoded.maxval = 255;
   }
   return decoded;
+}
+
+} // namespace
+
+DecodedImage decode_png(std::span<const std::uint8_t> bytes, std::string_view name) {
+  return decode(bytes, nullptr, name);
+}
+
+DecodedImage decode_png_file(std::span<const std::uint8_t> head, ImageFileReader& file) {
+  return decode(head, &file, file.name());
 }
 
 namespace {

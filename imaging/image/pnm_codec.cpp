@@ -17,7 +17,8 @@ struct PnmHeader {
   std::size_t raster_offset = 0;
 };
 
-PnmHeader read_pnm_header(std::span<const std::uint8_t> bytes, std::string_view name) {
+PnmHeader read_pnm_header(std::span<const std::uint8_t> bytes, std::string_view name,
+                          bool cut = false) {
   PnmHeader header;
   if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '5' && bytes[1] != '6'))
     fail(name, "not a binary PGM/PPM file (magic P5 or P6 expected)");
@@ -25,7 +26,7 @@ PnmHeader read_pnm_header(std::span<const std::uint8_t> bytes, std::string_view 
     header.format = ImageFormat::ppm;
     header.channels = 3;
   }
-  HeaderScanner scanner(bytes.subspan(2), name, /*comments=*/true);
+  HeaderScanner scanner(bytes.subspan(2), name, /*comments=*/true, cut);
   scanner.skip_separator("the magic number");
   header.width = scanner.read_number("width", 1, kMaxImageSide);
   scanner.skip_separator("the width");
@@ -35,6 +36,12 @@ PnmHeader read_pnm_header(std::span<const std::uint8_t> bytes, std::string_view 
   scanner.expect_single_whitespace("maxval");
   header.raster_offset = 2 + scanner.position();
   return header;
+}
+
+std::size_t raster_bytes(const PnmHeader& header) {
+  const std::size_t sample_bytes = header.maxval > 255 ? 2 : 1;
+  return static_cast<std::size_t>(header.width) * static_cast<std::size_t>(header.height) *
+         static_cast<std::size_t>(header.channels) * sample_bytes;
 }
 
 template <class T>
@@ -82,9 +89,7 @@ std::vector<std::uint8_t> encode(ImageView<const T> image, int maxval) {
 DecodedImage decode_pnm(std::span<const std::uint8_t> bytes, std::string_view name) {
   const PnmHeader header = read_pnm_header(bytes, name);
   const std::size_t sample_bytes = header.maxval > 255 ? 2 : 1;
-  const std::size_t expected = static_cast<std::size_t>(header.width) *
-                               static_cast<std::size_t>(header.height) *
-                               static_cast<std::size_t>(header.channels) * sample_bytes;
+  const std::size_t expected = raster_bytes(header);
   const std::span<const std::uint8_t> raster = bytes.subspan(header.raster_offset);
   // Checked before allocating, so a lying header cannot make us reserve gigabytes.
   if (raster.size() < expected)
@@ -98,6 +103,12 @@ DecodedImage decode_pnm(std::span<const std::uint8_t> bytes, std::string_view na
   else
     decoded.pixels = read_raster<std::uint16_t>(raster, header, name);
   return decoded;
+}
+
+std::size_t pnm_file_extent(std::span<const std::uint8_t> head, std::string_view name,
+                            bool head_is_cut) {
+  const PnmHeader header = read_pnm_header(head, name, head_is_cut);
+  return header.raster_offset + raster_bytes(header);
 }
 
 std::vector<std::uint8_t> encode_pnm(ImageView<const std::uint8_t> image) {

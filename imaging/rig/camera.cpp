@@ -30,6 +30,8 @@ void validate(const RigParameters& parameters) {
       throw RigError(
           fmt::format("rig parameter {}.{} = {}: {}", field.table, field.key, value, *problem));
   }
+  if (auto problem = detail::rig_geometry_problem(parameters))
+    throw RigError(fmt::format("rig: {}", *problem));
 }
 
 // Columns are the camera's x (right), y (down) and z (optical axis) in the body frame

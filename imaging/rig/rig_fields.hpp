@@ -17,9 +17,8 @@ struct RigField {
   std::string_view table; ///< "rig" or "rig.right_misalignment"
   std::string_view key;
   bool integer; ///< TOML integer required (image sizes)
-  double low;   ///< smallest allowed value (excluded when low_excluded)
+  double low;   ///< smallest allowed value
   double high;  ///< largest allowed value
-  bool low_excluded;
   double (*get)(const RigParameters&);
   void (*set)(RigParameters&, double);
 };
@@ -29,5 +28,14 @@ std::span<const RigField> rig_fields();
 
 /// Why a value is not acceptable for a field, or nothing if it is.
 std::optional<std::string> rig_value_problem(const RigField& field, double value);
+
+/// The paper's reference obstacle (section 2), whose parallax `marsokhod rig` reports: a 30 cm
+/// stone 14 m ahead of the rover centre. Every legal rig has it in front of its cameras.
+inline constexpr double kReferenceStoneDistanceM = 14.0;
+inline constexpr double kReferenceStoneHeightM = 0.3;
+
+/// Why the rig as a whole cannot compute its geometry although each value is in range (the
+/// cameras look away from the ground ahead), or nothing if it can.
+std::optional<std::string> rig_geometry_problem(const RigParameters& parameters);
 
 } // namespace marsokhod::imaging::detail

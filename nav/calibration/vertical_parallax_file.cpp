@@ -1,6 +1,7 @@
-// The calibration file: a vertical parallax map as TOML (docs/navigation.md, "Calibration file").
+// The calibration file: a vertical parallax map as TOML (docs/formats.md, "Calibration files").
 
 #include "marsokhod/imaging/rig/toml_document.hpp"
+#include "marsokhod/io/numbers/checked_number.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
 
 #include <fmt/format.h>
@@ -19,6 +20,11 @@ constexpr std::string_view kTable = "vertical_parallax";
 constexpr std::array<std::string_view, 6> kCoefficientKeys = {"c0",  "cx",  "cy",
                                                               "cxx", "cxy", "cyy"};
 constexpr int kMinSide = 16;
+// Largest |coefficient| (rows, rows per pixel, rows per pixel squared). A quadratic within
+// kMaxVerticalShift rows over an image of at least 16 x 16 pixels has coefficients below about
+// 64 * 4, so this refuses no usable map; it keeps every term (at most 1e6 * 8192^2 rows over
+// the largest image) finite, so that no two terms can cancel to NaN.
+constexpr double kMaxCoefficient = 1e6;
 
 /// Reads a calibration file and reports every problem naming the file and, where the problem
 /// has one, the line and column.
@@ -60,7 +66,7 @@ private:
     for (std::size_t i = 0; i < kCoefficientKeys.size(); ++i)
       map.coefficients[i] = read_number(table, kCoefficientKeys[i]);
     const double largest = map.largest_shift();
-    if (largest > kMaxVerticalShift)
+    if (!(largest <= kMaxVerticalShift))
       document_.fail(fmt::format("the map shifts rows by up to {:.1f}, more than the {} rows a "
                                  "calibration may correct",
                                  largest, kMaxVerticalShift));
@@ -86,10 +92,11 @@ private:
     if (!node.is_integer())
       fail(node.source(), fmt::format("key '{}.{}' must be an integer", kTable, key));
     const std::int64_t value = node.as_integer()->get();
-    if (value < kMinSide || value > imaging::kMaxImageSide)
+    const std::optional<int> side = io::narrow<int>(value);
+    if (!side || *side < kMinSide || *side > imaging::kMaxImageSide)
       fail(node.source(), fmt::format("key '{}.{}' must lie within {}..{} (got {})", kTable, key,
                                       kMinSide, imaging::kMaxImageSide, value));
-    return static_cast<int>(value);
+    return *side;
   }
 
   double read_number(const toml::table& table, std::string_view key) const {
@@ -100,6 +107,9 @@ private:
                                            : node.as_floating_point()->get();
     if (!std::isfinite(value))
       fail(node.source(), fmt::format("key '{}.{}' must be finite (got {})", kTable, key, value));
+    if (std::fabs(value) > kMaxCoefficient)
+      fail(node.source(), fmt::format("key '{}.{}' must be {} (got {})", kTable, key,
+                                      io::range_text(-kMaxCoefficient, kMaxCoefficient), value));
     return value;
   }
 

@@ -2,11 +2,11 @@
 
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/pictures/colormap.hpp"
+#include "marsokhod/io/files/file_writer.hpp"
 #include "marsokhod/world/scene/scene.hpp"
 
 #include <fmt/format.h>
 
-#include <fstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -48,13 +48,10 @@ public:
     scene_->outputs[key] = name;
   }
 
+  // Through a temporary and a rename, as the images: a full disk is an error naming the file,
+  // never a truncated scene.json.
   void json(const std::string& key, const std::string& name, const nlohmann::json& document) {
-    const fs::path path = folder_ / name;
-    std::ofstream out(path, std::ios::binary);
-    out << document.dump(2) << '\n';
-    out.close();
-    if (!out)
-      throw std::runtime_error(fmt::format("{}: cannot write the file", path.string()));
+    io::write_file_atomically(folder_ / name, document.dump(2) + '\n');
     scene_->outputs[key] = name;
   }
 

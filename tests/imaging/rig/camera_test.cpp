@@ -358,6 +358,9 @@ TEST(StereoRig, ImpossibleParametersAreRejectedByName) {
   edge.width_px = 16;
   edge.height_px = 16384;
   edge.pitch_down_deg = -89.0;
+  // Looking 89 deg up, the ground 14 m ahead is in front of a camera 0.2 m above it: the
+  // optical axis (cos 89, 0, sin 89) has 14 cos 89 - 0.2 sin 89 = 0.044 m along it.
+  edge.mast_height_m = 0.2;
   EXPECT_NO_THROW(StereoRig{edge});
 }
 

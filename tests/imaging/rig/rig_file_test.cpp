@@ -38,7 +38,7 @@ TEST(RigFile, ToTomlReadsBackToTheSameRig) {
   p.mast_height_m = 0.1 + 0.2; // not exactly 0.3: the text must keep every bit
   p.mast_forward_m = -0.125;
   p.pitch_down_deg = 12.345678901234567;
-  p.focal_mm = 1e-3 / 3.0;
+  p.focal_mm = 10.0 / 3.0;
   p.sensor_mm = 6.4;
   p.baseline_m = 2.0;
   p.width_px = 320;
@@ -113,7 +113,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadRig{"misalignment_not_table", "[rig]\nright_misalignment = 5\n",
                "rig.right_misalignment", 2},
         BadRig{"rig_not_table", "rig = 1\n", "rig", 1},
-        BadRig{"syntax_error", "[rig]\nfocal_mm = 12.0\nbaseline_m = = 0.5\n", "syntax error: ", 3},
+        BadRig{"syntax_error", "[rig]\nfocal_mm = 12.0\nbaseline_m = = 0.5\n", "syntax error", 3},
         BadRig{"syntax_error_line", "[rig]\nfocal_mm = 12.0\nbaseline_m = = 0.5\n",
                "\"baseline_m = = 0.5\"", 3},
         BadRig{"duplicate_key", "[rig]\nfocal_mm = 12.0\nfocal_mm = 11.0\n", "focal_mm", 3}),

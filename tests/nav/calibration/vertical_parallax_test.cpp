@@ -118,6 +118,10 @@ std::string load_error(const fs::path& path) {
   return "no error";
 }
 
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  return text.replace(text.find(from), from.size(), to);
+}
+
 constexpr const char* kGoodTable = "[vertical_parallax]\nwidth_px = 128\nheight_px = 96\n"
                                    "c0 = 1.5\ncx = 0.001\ncy = 0\ncxx = 0.0\ncxy = 2e-5\n"
                                    "cyy = 3e-5\n";
@@ -134,7 +138,49 @@ TEST(CalibrationFile, ReadsBackExactlyWhatItWrote) {
 
 TEST(CalibrationFile, AMissingFileIsNamed) {
   const fs::path path = fs::temp_directory_path() / "marsokhod-parallax-tests" / "absent.toml";
-  EXPECT_EQ(load_error(path), path.string() + ": cannot open calibration file");
+  EXPECT_EQ(load_error(path).rfind(path.string() + ": cannot open the calibration file", 0), 0U)
+      << load_error(path);
+}
+
+// The bounded reader refuses what is not a regular file without blocking or reading it.
+TEST(CalibrationFile, ADeviceIsRefusedWithoutBeingRead) {
+  const std::string message = load_error("/dev/zero");
+  EXPECT_EQ(message.rfind("/dev/zero: is a device", 0), 0U) << message;
+}
+
+// Two terms of 1e300 rows per pixel squared at the corner of a square image overflow to +inf
+// and -inf; their sum is NaN, which no comparison with the 64-row limit refuses. The
+// coefficient range keeps every term finite.
+TEST(CalibrationFile, CoefficientsThatCouldCancelToNanAreRefusedByName) {
+  const std::string square = replaced(kGoodTable, "height_px = 96", "height_px = 128");
+  const std::string text =
+      replaced(replaced(square, "cxx = 0.0", "cxx = 1e300"), "cyy = 3e-5", "cyy = -1e300");
+  const std::string message = load_error(write_file("cancelling.toml", text));
+  EXPECT_NE(message.find("key 'vertical_parallax.cxx' must be between -1000000 and 1000000"),
+            std::string::npos)
+      << message;
+}
+
+// The general rule: every coefficient key accepts up to 1e6 in magnitude as a number (such a
+// map is still refused for its shift) and nothing beyond; at the largest legal coefficients
+// and image the shift is finite, so the shift limit always decides.
+TEST(CalibrationFile, EveryCoefficientIsBoundedAndTheLargestLegalMapStaysFinite) {
+  for (const char* key : {"c0", "cx", "cy", "cxx", "cxy", "cyy"}) {
+    const std::string line = std::string(key) + " = ";
+    const std::string table = std::string(kGoodTable);
+    const std::size_t start = table.find("\n" + line) + 1;
+    const std::size_t end = table.find('\n', start);
+    const std::string at_limit = table.substr(0, start) + line + "-1e6" + table.substr(end);
+    const std::string beyond = table.substr(0, start) + line + "1.000001e6" + table.substr(end);
+    EXPECT_NE(load_error(write_file("limit.toml", at_limit)).find("more than the 64"),
+              std::string::npos)
+        << key;
+    EXPECT_NE(load_error(write_file("beyond.toml", beyond)).find("must be between"),
+              std::string::npos)
+        << key;
+  }
+  const VerticalParallaxMap largest{16384, 16384, {1e6, -1e6, 1e6, -1e6, 1e6, -1e6}};
+  EXPECT_TRUE(std::isfinite(largest.largest_shift()));
 }
 
 struct BadFile {
@@ -152,10 +198,6 @@ TEST_P(CalibrationFileErrors, NameTheFileAndTheProblem) {
   EXPECT_NE(message.find(GetParam().problem), std::string::npos) << message;
 }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  return text.replace(text.find(from), from.size(), to);
-}
-
 INSTANTIATE_TEST_SUITE_P(
     VerticalParallax, CalibrationFileErrors,
     ::testing::Values(
@@ -169,6 +211,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "missing"},
         BadFile{"string", replaced(kGoodTable, "c0 = 1.5", "c0 = \"1.5\""), "must be a number"},
         BadFile{"nan", replaced(kGoodTable, "c0 = 1.5", "c0 = nan"), "must be finite"},
+        BadFile{"infinite", replaced(kGoodTable, "c0 = 1.5", "c0 = -inf"), "must be finite"},
+        // 2^32 + 128 would be 128 after a cast to 32 bits.
+        BadFile{"wrapping_size", replaced(kGoodTable, "width_px = 128", "width_px = 4294967424"),
+                "must lie within 16..16384 (got 4294967424)"},
         BadFile{"float_size", replaced(kGoodTable, "width_px = 128", "width_px = 128.0"),
                 "must be an integer"},
         BadFile{"tiny", replaced(kGoodTable, "height_px = 96", "height_px = 2"),
