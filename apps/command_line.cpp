@@ -4,8 +4,13 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <iostream>
+#include <string>
+#include <system_error>
 
 namespace marsokhod::apps {
 namespace {
@@ -14,21 +19,33 @@ void print_error(const std::string& message) {
   fmt::print(stderr, "marsokhod: error: {}\n", message);
 }
 
-} // namespace
+std::string stdout_problem(int error) {
+  return std::string("cannot write standard output: ") +
+         (error != 0 ? std::strerror(error) : "write error");
+}
 
-int run_command_line(int argc, const char* const* argv) {
-  CLI::App app{"marsokhod: Marsokhod rover stereo navigation on an emulated T805 transputer "
-               "network, and the synthetic Mars world to test it in.",
-               "marsokhod"};
-  // At most one; "none" is reported below, so that an unknown word is named as such first.
-  app.require_subcommand(0, 1);
-  app.set_version_flag("--version", "marsokhod 0.1.0");
-  app.footer("Run 'marsokhod COMMAND --help' for the options of one command.");
+// A write to stdout that failed inside a command (fmt throws std::system_error when fwrite
+// fails); errno still tells why.
+bool stdout_failed() {
+  return std::ferror(stdout) != 0;
+}
 
-  std::vector<Command> commands;
-  for (CommandFactory factory : command_factories())
-    commands.push_back(factory(app));
+// Everything printed goes through stdout's buffer (std::cout is synchronised with it). The
+// results only count when they reached the file or pipe: a failed flush, or an earlier failed
+// write, turns any exit code into 1.
+int checked_stdout(int code) {
+  errno = 0;
+  std::cout.flush();
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (flushed && !stdout_failed())
+    return code;
+  print_error(stdout_problem(error));
+  return kRuntimeError;
+}
 
+int parse_and_run(CLI::App& app, const std::vector<Command>& commands, int argc,
+                  const char* const* argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -51,12 +68,31 @@ int run_command_line(int argc, const char* const* argv) {
       print_error(e.what());
       return kUsageError;
     } catch (const std::exception& e) {
-      print_error(e.what());
+      // A failed write to stdout is reported once, by checked_stdout, in its own words.
+      if (!stdout_failed())
+        print_error(e.what());
       return kRuntimeError;
     }
   }
   print_error("a subcommand is required; run 'marsokhod --help' for the list");
   return kUsageError;
+}
+
+} // namespace
+
+int run_command_line(int argc, const char* const* argv) {
+  CLI::App app{"marsokhod: Marsokhod rover stereo navigation on an emulated T805 transputer "
+               "network, and the synthetic Mars world to test it in.",
+               "marsokhod"};
+  // At most one; "none" is reported below, so that an unknown word is named as such first.
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version", "marsokhod 0.1.0");
+  app.footer("Run 'marsokhod COMMAND --help' for the options of one command.");
+
+  std::vector<Command> commands;
+  for (CommandFactory factory : command_factories())
+    commands.push_back(factory(app));
+  return checked_stdout(parse_and_run(app, commands, argc, argv));
 }
 
 } // namespace marsokhod::apps
