@@ -24,10 +24,26 @@ std::string stdout_problem(int error) {
          (error != 0 ? std::strerror(error) : "write error");
 }
 
-// A write to stdout that failed inside a command (fmt throws std::system_error when fwrite
-// fails); errno still tells why.
 bool stdout_failed() {
   return std::ferror(stdout) != 0;
+}
+
+// Why an earlier write to stdout failed, when it did (0 when unknown): a flush that follows
+// finds nothing left to write and cannot tell any more.
+int earlier_stdout_error = 0;
+
+void remember_stdout_error(int error) {
+  if (stdout_failed() && earlier_stdout_error == 0)
+    earlier_stdout_error = error;
+}
+
+// CLI11 prints help and version on std::cout and flushes it (std::endl); a failure there
+// leaves its errno behind.
+int print_by_cli11(CLI::App& app, const CLI::Error& e) {
+  errno = 0;
+  const int code = app.exit(e);
+  remember_stdout_error(errno);
+  return code;
 }
 
 // Everything printed goes through stdout's buffer (std::cout is synchronised with it). The
@@ -40,7 +56,7 @@ int checked_stdout(int code) {
   const int error = errno;
   if (flushed && !stdout_failed())
     return code;
-  print_error(stdout_problem(error));
+  print_error(stdout_problem(error != 0 ? error : earlier_stdout_error));
   return kRuntimeError;
 }
 
@@ -49,11 +65,11 @@ int parse_and_run(CLI::App& app, const std::vector<Command>& commands, int argc,
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return print_by_cli11(app, e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return print_by_cli11(app, e);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return print_by_cli11(app, e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return kUsageError;
@@ -67,8 +83,13 @@ int parse_and_run(CLI::App& app, const std::vector<Command>& commands, int argc,
     } catch (const UsageError& e) {
       print_error(e.what());
       return kUsageError;
+    } catch (const std::system_error& e) {
+      // fmt throws this when a write to stdout fails; checked_stdout reports it, once.
+      remember_stdout_error(e.code().value());
+      if (!stdout_failed())
+        print_error(e.what());
+      return kRuntimeError;
     } catch (const std::exception& e) {
-      // A failed write to stdout is reported once, by checked_stdout, in its own words.
       if (!stdout_failed())
         print_error(e.what());
       return kRuntimeError;

@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -112,12 +113,16 @@ imaging::Image<float> read_disparity(const fs::path& path, int width, int height
   return disparity;
 }
 
-// The attitude the world placed the rover in, as its scene.json records it.
+// The attitude the world placed the rover in, as its scene.json records it. Any other failure
+// of the read (a stream error on a folder, say) is still this file's problem and is named so.
 imaging::Attitude scene_attitude(const fs::path& path) {
   try {
     return world::read_scene_attitude(path);
   } catch (const world::SceneFileError& error) {
     throw CommandError(error.what());
+  } catch (const std::exception& error) {
+    throw CommandError(
+        fmt::format("{}: cannot read the scene file: {}", path.string(), error.what()));
   }
 }
 

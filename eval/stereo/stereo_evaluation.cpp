@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <variant>
 
 namespace marsokhod::eval {
@@ -129,6 +130,19 @@ void write_outputs(const StereoEvaluationOptions& options, const std::string& na
   imaging::write_image(png, imaging::false_colour(disparity.view(), colour).view());
 }
 
+// The matcher refuses options that do not suit this pair (more pyramid layers than its size
+// allows); the message then says which pair of the index it was.
+nav::StereoResult match(const StereoEvaluationOptions& options, const StereoPairEntry& entry,
+                        const imaging::Image<std::uint8_t>& left,
+                        const imaging::Image<std::uint8_t>& right,
+                        const nav::StereoOptions& stereo) {
+  try {
+    return nav::match_stereo(left.view(), right.view(), stereo);
+  } catch (const std::invalid_argument& error) {
+    fail(options, entry, fmt::format("{}: {}", entry.left.string(), error.what()));
+  }
+}
+
 PairEvaluation evaluate(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
   const imaging::Image<std::uint8_t> left = read_grey(options, entry, entry.left);
   imaging::Image<std::uint8_t> right = read_grey(options, entry, entry.right);
@@ -141,7 +155,7 @@ PairEvaluation evaluate(const StereoEvaluationOptions& options, const StereoPair
   nav::StereoOptions stereo = options.stereo;
   stereo.max_disparity = pair.max_disparity;
   const auto start = std::chrono::steady_clock::now();
-  const nav::StereoResult result = nav::match_stereo(left.view(), right.view(), stereo);
+  const nav::StereoResult result = match(options, entry, left, right, stereo);
   pair.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   pair.valid_percent = 100.0 * static_cast<double>(result.valid_pixels) /
                        static_cast<double>(entry.width * entry.height);

@@ -185,8 +185,11 @@ TEST_F(StereoPairs, PairNamesThatWouldLeaveTheOutputFolderAreRefused) {
   const fs::path nested = named("a/b");
   EXPECT_EQ(error_of(nested),
             nested.string() + ":2: pair name 'a/b' holds a '/'; it names files in one folder");
+  std::vector<std::string> taken;
   for (const char* name : {"..", ".", "a/../b", "x\x01y"})
-    EXPECT_NE(error_of(named(name)).find(":2: pair name '"), std::string::npos) << name;
+    if (error_of(named(name)).find(":2: pair name '") == std::string::npos)
+      taken.push_back(name);
+  EXPECT_EQ(taken, std::vector<std::string>{});
   EXPECT_EQ(read_stereo_pairs(named("tsukuba.v2-left")).front().name, "tsukuba.v2-left");
 }
 

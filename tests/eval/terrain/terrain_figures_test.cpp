@@ -136,9 +136,16 @@ TEST(SeedRange, SeedsAreWholeUnsigned64BitNumbersWithoutWrapOrJunk) {
   EXPECT_EQ(top.last, 18446744073709551615U);
   // Leading zeros are decimal, not octal.
   EXPECT_EQ(parse_seed_range("010").first, 10U);
+  std::vector<std::string> taken;
   for (const char* text : {"18446744073709551616", "1..18446744073709551616", "", "..", "1x",
-                           "1..2x", "+1", "1e3", "0x10", "1...3", "1..2..3", " 1", "1 ..2"})
-    EXPECT_THROW(parse_seed_range(text), OptionError) << "'" << text << "'";
+                           "1..2x", "+1", "1e3", "0x10", "1...3", "1..2..3", " 1", "1 ..2"}) {
+    try {
+      parse_seed_range(text);
+      taken.push_back(text);
+    } catch (const OptionError&) {
+    }
+  }
+  EXPECT_EQ(taken, std::vector<std::string>{});
 }
 
 // A range ending at the largest seed is counted, so the loop over it ends.
