@@ -70,7 +70,8 @@ Command add_stereo_evaluation(CLI::App& parent) {
   options.stereo.ground_prior = false; // Middlebury scenes are not views of the ground
   CLI::App* app = parent.add_subcommand(
       "stereo", "Bad-1.0 % and time of the stereo matcher on the pairs of a PAIRS.tsv index.");
-  app->add_option("PAIRS", options.index, "Tab-separated pair index (docs/navigation.md)")
+  app->add_option("PAIRS", options.index,
+                  "Tab-separated pair index (docs/formats.md, \"Stereo pair index\")")
       ->required();
   app->add_flag("--json", cli->json, "Print one JSON object instead of a table");
   app->add_option("--out", options.out_dir,
