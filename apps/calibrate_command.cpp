@@ -2,9 +2,11 @@
 // (docs/navigation.md, "Vertical parallax calibration").
 
 #include "command.hpp"
+#include "option_checks.hpp"
 
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/io/files/file_writer.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax_calibration.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 
@@ -12,7 +14,6 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,23 +49,6 @@ int default_max_disparity(int width, int height) {
     return nav::rover_max_disparity(imaging::StereoRig(parameters), {});
   } catch (const imaging::RigError&) {
     return width / 4;
-  }
-}
-
-// Written beside the target and renamed over it, so a failed write leaves no half file.
-void write_text(const fs::path& path, const std::string& text) {
-  const fs::path temporary = fs::path(path.string() + ".partial");
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out.flush())
-      throw CommandError(fmt::format("{}: cannot write the calibration file", path.string()));
-  }
-  std::error_code error;
-  fs::rename(temporary, path, error);
-  if (error) {
-    fs::remove(temporary, error);
-    throw CommandError(fmt::format("{}: cannot write the calibration file", path.string()));
   }
 }
 
@@ -104,13 +88,13 @@ int run_calibrate(const CalibrateCli& cli) {
     throw CommandError(fmt::format("{}: {}", cli.left.string(), error.what()));
   }
   const nlohmann::ordered_json summary = summary_json(result, cli.out);
-  write_text(cli.out,
-             nav::vertical_parallax_to_toml(
-                 result.map,
-                 fmt::format("fitted to {} and {}: {} of {} blocks matched, residual "
-                             "{:.3f} rows rms",
-                             cli.left.filename().string(), cli.right.filename().string(),
-                             result.samples.size(), result.blocks_searched, result.rms_residual)));
+  io::write_file_atomically(
+      cli.out, nav::vertical_parallax_to_toml(
+                   result.map, fmt::format("fitted to {} and {}: {} of {} blocks matched, residual "
+                                           "{:.3f} rows rms",
+                                           cli.left.filename().string(),
+                                           cli.right.filename().string(), result.samples.size(),
+                                           result.blocks_searched, result.rms_residual)));
   if (cli.json) {
     fmt::print("{}\n", summary.dump(2));
     return kSuccess;
@@ -136,9 +120,9 @@ Command make_calibrate_command(CLI::App& parent) {
   app->add_option("--out", cli->out, "Calibration file to write (TOML)")->required();
   app->add_option("--max-disparity", cli->max_disparity,
                   "Horizontal search, px (default: the rover's range at the images' size)")
-      ->check(CLI::Range(2, 1024));
+      ->transform(integer_between(2, 1024));
   app->add_option("--max-shift", cli->max_shift, "Vertical search either way, rows")
-      ->check(CLI::Range(2, 32))
+      ->transform(integer_between(2, 32))
       ->capture_default_str();
   app->add_flag("--json", cli->json, "Print a machine-readable summary on stdout");
   return {app, [cli] { return run_calibrate(*cli); }};

@@ -1,6 +1,8 @@
 // `marsokhod commstime`: the occam Commstime benchmark on one emulated T805.
 
 #include "command.hpp"
+#include "option_checks.hpp"
+#include "trace_file.hpp"
 
 #include "marsokhod/emulator/kernel/kernel.hpp"
 #include "marsokhod/emulator/node/node.hpp"
@@ -12,7 +14,6 @@
 #include <nlohmann/json.hpp>
 
 #include <ctime>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -78,15 +79,9 @@ Measurement measure(const CommstimeCommandOptions& options, const emu::NodeSpec&
 Measurement run_traced(const CommstimeCommandOptions& options, const emu::NodeSpec& spec) {
   if (options.trace_file.empty())
     return measure(options, spec, nullptr);
-  std::ofstream out(options.trace_file, std::ios::binary);
-  if (!out)
-    throw CommandError(fmt::format("{}: cannot write the trace file", options.trace_file));
-  emu::ChromeTraceWriter writer(out);
-  Measurement m = measure(options, spec, &writer);
-  writer.close();
-  if (!out)
-    throw CommandError(fmt::format("{}: writing the trace failed", options.trace_file));
-  return m;
+  return with_trace_file(options.trace_file, [&](emu::ChromeTraceWriter& writer) {
+    return measure(options, spec, &writer);
+  });
 }
 
 // Exact: the measured time is a whole number of cycles.
@@ -138,7 +133,8 @@ Command make_commstime_command(CLI::App& parent) {
   app->add_option("--platform", options->platform, "platform TOML file (default: pc-card.toml)");
   app->add_option("--node", options->node, "node to run on (default: the first powered one)");
   app->add_option("--loops", options->loops, "loops measured (four communications each)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1'000'000'000}));
+      ->transform(integer_between(std::int64_t{1}, std::int64_t{1'000'000'000}))
+      ->capture_default_str();
   app->add_option("--delta", options->delta, "delta outputs in PAR (the standard form) or in SEQ")
       ->check(CLI::IsMember({"par", "seq"}));
   app->add_option("--trace", options->trace_file, "write a Chrome Trace Event JSON file");

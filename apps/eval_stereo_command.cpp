@@ -1,6 +1,7 @@
 // `marsokhod eval stereo PAIRS`: the options of the stereo evaluation, and its table or JSON.
 
 #include "command.hpp"
+#include "option_checks.hpp"
 
 #include "marsokhod/eval/stereo/stereo_evaluation.hpp"
 
@@ -69,32 +70,33 @@ Command add_stereo_evaluation(CLI::App& parent) {
   options.stereo.ground_prior = false; // Middlebury scenes are not views of the ground
   CLI::App* app = parent.add_subcommand(
       "stereo", "Bad-1.0 % and time of the stereo matcher on the pairs of a PAIRS.tsv index.");
-  app->add_option("PAIRS", options.index, "Tab-separated pair index (docs/navigation.md)")
+  app->add_option("PAIRS", options.index,
+                  "Tab-separated pair index (docs/formats.md, \"Stereo pair index\")")
       ->required();
   app->add_flag("--json", cli->json, "Print one JSON object instead of a table");
   app->add_option("--out", options.out_dir,
                   "Write <pair>_disparity.pfm and a false-colour .png per pair here");
   app->add_option("--max-disparity", options.fallback_max_disparity,
                   "Search range of pairs whose index gives no largest disparity")
-      ->check(CLI::Range(1, 4096))
+      ->transform(integer_between(1, 4096))
       ->capture_default_str();
   app->add_option("--feature", cli->feature, "Brightness feature: census3x3, census5x5, rank5x5")
       ->check(CLI::IsMember({"census3x3", "census5x5", "rank5x5"}))
       ->capture_default_str();
   app->add_option("--levels", options.stereo.pyramid_levels, "Pyramid layers (0 = automatic)")
-      ->check(CLI::Range(0, nav::kMaxPyramidLevels))
+      ->transform(integer_between(0, nav::kMaxPyramidLevels))
       ->capture_default_str();
   app->add_option("--band", options.stereo.search_band,
                   "Search band around the coarse estimate, px")
-      ->check(CLI::Range(0, 64))
+      ->transform(integer_between(0, 64))
       ->capture_default_str();
   app->add_option("--fill", cli->fill, "Fill policy of unreliable pixels: background or none")
       ->check(CLI::IsMember({"background", "none"}))
       ->capture_default_str();
   app->add_option("--right-gain", options.right_gain, "Multiply every right image by this first")
-      ->check(CLI::Range(0.01, 100.0));
+      ->check(real_between(0.01, 100.0));
   app->add_option("--right-offset", options.right_offset, "Then add this grey level")
-      ->check(CLI::Range(-255.0, 255.0));
+      ->check(real_between(-255.0, 255.0));
   return {app, [cli] {
             cli->evaluation.stereo.feature = *nav::parse_feature_kind(cli->feature);
             cli->evaluation.stereo.fill = *nav::parse_fill_policy(cli->fill);

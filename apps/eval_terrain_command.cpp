@@ -1,6 +1,7 @@
 // `marsokhod eval terrain`: its options, the evaluation on synthetic terrain, its table or JSON.
 
 #include "command.hpp"
+#include "option_checks.hpp"
 
 #include "marsokhod/eval/common/errors.hpp"
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
@@ -139,17 +140,17 @@ Command add_terrain_evaluation(CLI::App& parent) {
       "unknown, step and slope pixels against the obstacle map itself, without margins.");
   app->add_option("--seeds", cli->seeds, "Terrain seeds A..B (inclusive) or one seed")->required();
   app->add_option("--size", cli->evaluation.size, "Image width and height, pixels")
-      ->check(CLI::Range(32, 1024))
+      ->transform(integer_between(32, 1024))
       ->capture_default_str();
   app->add_option("--light", cli->evaluation.light, "Lighting preset")
       ->check(CLI::IsMember({"high-sun", "overexposed", "dark-wet", "low-sun"}))
       ->capture_default_str();
   app->add_option("--rocks", cli->evaluation.rocks, "Fraction of the ground covered by rocks")
-      ->check(CLI::Range(0.0, 0.5))
+      ->check(real_between(0.0, 0.5))
       ->capture_default_str();
   app->add_option("--terrain-size", cli->evaluation.terrain_size,
                   "Side of each square site, metres")
-      ->check(CLI::Range(16.0, 200.0))
+      ->check(real_between(16.0, 200.0))
       ->capture_default_str();
   app->add_flag("--oracle", cli->evaluation.oracle,
                 "Navigate on the ground-truth disparity instead of matching (scores the hazard "

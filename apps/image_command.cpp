@@ -2,6 +2,7 @@
 // optional false-colour picture of a one-channel field.
 
 #include "command.hpp"
+#include "option_checks.hpp"
 
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/pictures/colormap.hpp"
@@ -18,6 +19,9 @@
 
 namespace marsokhod::apps {
 namespace {
+
+// The colour scale is in float: a bound beyond would become infinite.
+constexpr double kLargestFloat = std::numeric_limits<float>::max();
 
 struct InfoOptions {
   std::string file;
@@ -158,8 +162,6 @@ bool ends_with_pfm(const std::string& file) {
 int run_convert(const ConvertOptions& options) {
   const bool has_min = options.min_option->count() > 0;
   const bool has_max = options.max_option->count() > 0;
-  if ((has_min && !std::isfinite(options.min)) || (has_max && !std::isfinite(options.max)))
-    throw UsageError("--min and --max must be finite numbers");
   if (has_min && has_max && !(options.min < options.max))
     throw UsageError(fmt::format("--min {} must be below --max {}", options.min, options.max));
   imaging::AnyImage image = imaging::read_image(options.input);
@@ -203,9 +205,11 @@ CLI::App* add_convert(CLI::App& image, const std::shared_ptr<ConvertOptions>& op
                                           "Render a one-channel image as a false-colour picture");
   options->min_option =
       convert->add_option("--min", options->min, "Value at the bottom of the colour scale")
+          ->check(real_between(-kLargestFloat, kLargestFloat))
           ->needs(colour);
   options->max_option =
       convert->add_option("--max", options->max, "Value at the top of the colour scale")
+          ->check(real_between(-kLargestFloat, kLargestFloat))
           ->needs(colour);
   convert->add_option("--unit", options->unit, "Unit shown on the legend, e.g. px or m")
       ->needs(colour);

@@ -1,6 +1,8 @@
 // `marsokhod linktest`: streams bytes over an emulated link and reports its throughput.
 
 #include "command.hpp"
+#include "option_checks.hpp"
+#include "trace_file.hpp"
 
 #include "marsokhod/emulator/links/link_stream.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
@@ -10,7 +12,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,16 +54,10 @@ emu::LinkStreamResult stream(const LinktestOptions& options, const emu::Platform
   stream_options.message_bytes = options.message_bytes;
   if (options.trace_file.empty())
     return emu::run_link_stream(platform, stream_options);
-  std::ofstream out(options.trace_file, std::ios::binary);
-  if (!out)
-    throw CommandError(fmt::format("{}: cannot write the trace file", options.trace_file));
-  emu::ChromeTraceWriter writer(out);
-  stream_options.trace = &writer;
-  const emu::LinkStreamResult result = emu::run_link_stream(platform, stream_options);
-  writer.close();
-  if (!out)
-    throw CommandError(fmt::format("{}: writing the trace failed", options.trace_file));
-  return result;
+  return with_trace_file(options.trace_file, [&](emu::ChromeTraceWriter& writer) {
+    stream_options.trace = &writer;
+    return emu::run_link_stream(platform, stream_options);
+  });
 }
 
 nlohmann::ordered_json result_json(const LinktestOptions& options,
@@ -114,16 +109,19 @@ Command make_linktest_command(CLI::App& parent) {
                   "platform TOML file (default: onboard.toml); the first wire joining two "
                   "powered nodes is used");
   app->add_option("--bytes", options->bytes, "bytes to send in each direction that carries traffic")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000}))
+      ->transform(integer_between(std::uint64_t{1}, std::uint64_t{1'000'000'000}))
       ->capture_default_str();
   app->add_option("--mode", options->mode,
                   "oneway: one direction; both: both directions at once (bytes_per_second is "
                   "then the sum)")
       ->check(CLI::IsMember({"oneway", "both"}))
       ->capture_default_str();
-  app->add_option("--mbps", options->mbps, "link speed in Mbit/s (default: the wire's speed)");
+  app->add_option("--mbps", options->mbps,
+                  "link speed in Mbit/s, one the platform's links support (default: the wire's "
+                  "speed)")
+      ->transform(integer_between(1, 1000));
   app->add_option("--message-bytes", options->message_bytes, "bytes per output/input message")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 24))
+      ->transform(integer_between(std::size_t{1}, std::size_t{1} << 24))
       ->capture_default_str();
   app->add_option("--trace", options->trace_file, "write a Chrome Trace Event JSON file");
   app->add_flag("--json", options->json, "print one JSON object instead of text");

@@ -2,6 +2,7 @@
 
 #include "command.hpp"
 #include "nav_outputs.hpp"
+#include "option_checks.hpp"
 
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/image/output_folder.hpp"
@@ -15,6 +16,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -111,12 +113,16 @@ imaging::Image<float> read_disparity(const fs::path& path, int width, int height
   return disparity;
 }
 
-// The attitude the world placed the rover in, as its scene.json records it.
+// The attitude the world placed the rover in, as its scene.json records it. Any other failure
+// of the read (a stream error on a folder, say) is still this file's problem and is named so.
 imaging::Attitude scene_attitude(const fs::path& path) {
   try {
     return world::read_scene_attitude(path);
   } catch (const world::SceneFileError& error) {
     throw CommandError(error.what());
+  } catch (const std::exception& error) {
+    throw CommandError(
+        fmt::format("{}: cannot read the scene file: {}", path.string(), error.what()));
   }
 }
 
@@ -199,17 +205,17 @@ Command make_nav_command(CLI::App& parent) {
                   "Rig TOML file (docs/formats.md); default: the paper's rig at the images' size");
   CLI::Option* pitch = app->add_option("--pitch", cli->pitch_deg,
                                        "Rover pitch from the inclinometer, deg, nose up +")
-                           ->check(CLI::Range(-45.0, 45.0))
+                           ->check(real_between(-45.0, 45.0))
                            ->capture_default_str();
   CLI::Option* roll = app->add_option("--roll", cli->roll_deg, "Rover roll, deg, right side down +")
-                          ->check(CLI::Range(-45.0, 45.0))
+                          ->check(real_between(-45.0, 45.0))
                           ->capture_default_str();
   app->add_option("--heading", cli->heading_deg,
                   "Mission heading relative to the rover's, deg, counter-clockwise +")
-      ->check(CLI::Range(-180.0, 180.0))
+      ->check(real_between(-180.0, 180.0))
       ->capture_default_str();
   app->add_option("--max-step", cli->max_step_m, "Largest step the rover climbs, m")
-      ->check(CLI::Range(0.01, 5.0))
+      ->check(real_between(0.01, 5.0))
       ->capture_default_str();
   app->add_option("--disparity", cli->disparity_file,
                   "Use this disparity map (PFM, +inf unknown) instead of matching the pair");

@@ -6,12 +6,12 @@
 
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/pictures/colormap.hpp"
+#include "marsokhod/io/files/file_writer.hpp"
 
 #include <fmt/format.h>
 
 #include <array>
 #include <cmath>
-#include <fstream>
 
 namespace marsokhod::apps {
 namespace {
@@ -131,10 +131,7 @@ std::map<std::string, fs::path> write_navigation_outputs(const fs::path& folder,
   put("zones", "zones.png", zone_picture(result.zones));
   put("path_overlay", "path_overlay.png", path_overlay(left, result));
   const fs::path json_path = folder / "path.json";
-  std::ofstream out(json_path, std::ios::binary);
-  out << path_json(result).dump(2) << '\n';
-  if (!out)
-    throw CommandError(fmt::format("{}: cannot write the path", json_path.string()));
+  io::write_file_atomically(json_path, path_json(result).dump(2) + '\n');
   written["path"] = json_path;
   return written;
 }

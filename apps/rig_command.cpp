@@ -1,6 +1,7 @@
 // `marsokhod rig`: the stereo rig's geometry (blind zone, ground disparity, stone parallax).
 
 #include "command.hpp"
+#include "option_checks.hpp"
 
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/rig/rig_geometry.hpp"
@@ -130,7 +131,7 @@ Command make_rig_command(CLI::App& parent) {
   auto options = std::make_shared<RigOptions>();
   app->add_option("--rig", options->rig_file, "rig TOML file (default: the paper's rig)");
   app->add_option("--size", options->size, "image side in pixels, overriding the rig's size")
-      ->check(CLI::IsMember({128, 256}));
+      ->transform(integer_one_of({128, 256}));
   app->add_flag("--json", options->json, "print one JSON object instead of text");
   return {app, [options] {
             const imaging::StereoRig rig = make_rig(*options);

@@ -1,6 +1,7 @@
 // `marsokhod world`: renders a synthetic stereo pair with ground truth into a folder.
 
 #include "command.hpp"
+#include "option_checks.hpp"
 
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/world/render/renderer.hpp"
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,6 +28,10 @@ using Clock = std::chrono::steady_clock;
 
 /// Clearance the chassis needs from the terrain border, metres.
 constexpr double kBorderClearance = 2.0;
+/// Half the largest --terrain-size: no position beyond can be inside a terrain.
+constexpr double kMaxPositionM = 100.0;
+/// The rig file's limit on a misalignment angle (docs/formats.md, "Rig files").
+constexpr double kMaxMisalignmentArcsec = 3600.0;
 
 struct WorldOptions {
   std::uint64_t seed = 1;
@@ -159,31 +165,41 @@ Command make_world_command(CLI::App& parent) {
                "elevation, visibility, obstacles) into a folder.");
   auto o = std::make_shared<WorldOptions>();
   app->add_option("--seed", o->seed, "Seed of the terrain and the sensor noise")
+      ->transform(integer_between<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()))
       ->capture_default_str();
   app->add_option("--size", o->size, "Image width and height in pixels (the paper: 128 or 256)")
-      ->check(CLI::Range(16, 2048));
+      ->transform(integer_between(16, 2048));
   app->add_option("--out", o->out, "Output folder (created if missing)")->required();
   app->add_option("--light", o->light, "Lighting preset")
       ->check(CLI::IsMember({"high-sun", "overexposed", "dark-wet", "low-sun"}))
       ->capture_default_str();
   app->add_option("--rocks", o->rocks, "Fraction of the ground covered by rocks")
-      ->check(CLI::Range(0.0, 0.5))
+      ->check(real_between(0.0, 0.5))
       ->capture_default_str();
   app->add_option("--terrain-size", o->terrain_size, "Side of the square terrain, metres")
-      ->check(CLI::Range(8.0, 200.0))
+      ->check(real_between(8.0, 200.0))
       ->capture_default_str();
-  app->add_option("--x", o->pose.x, "Rover position east, metres")->capture_default_str();
-  app->add_option("--y", o->pose.y, "Rover position north, metres")->capture_default_str();
+  app->add_option("--x", o->pose.x,
+                  "Rover position east, metres (at least 2 m inside the terrain's edge)")
+      ->check(real_between(-kMaxPositionM, kMaxPositionM))
+      ->capture_default_str();
+  app->add_option("--y", o->pose.y,
+                  "Rover position north, metres (at least 2 m inside the terrain's edge)")
+      ->check(real_between(-kMaxPositionM, kMaxPositionM))
+      ->capture_default_str();
   app->add_option("--heading", o->pose.heading_deg,
                   "Rover heading, degrees counter-clockwise from east")
-      ->check(CLI::Range(-360.0, 360.0))
+      ->check(real_between(-360.0, 360.0))
       ->capture_default_str();
   app->add_option("--noise", o->noise, "Sensor noise standard deviation, grey levels")
-      ->check(CLI::Range(0.0, 64.0))
+      ->check(real_between(0.0, 64.0))
       ->capture_default_str();
-  app->add_option("--misalign-pan", o->pan, "Right camera pan misalignment, arc seconds");
-  app->add_option("--misalign-tilt", o->tilt, "Right camera tilt misalignment, arc seconds");
-  app->add_option("--misalign-roll", o->roll, "Right camera roll misalignment, arc seconds");
+  app->add_option("--misalign-pan", o->pan, "Right camera pan misalignment, arc seconds")
+      ->check(real_between(-kMaxMisalignmentArcsec, kMaxMisalignmentArcsec));
+  app->add_option("--misalign-tilt", o->tilt, "Right camera tilt misalignment, arc seconds")
+      ->check(real_between(-kMaxMisalignmentArcsec, kMaxMisalignmentArcsec));
+  app->add_option("--misalign-roll", o->roll, "Right camera roll misalignment, arc seconds")
+      ->check(real_between(-kMaxMisalignmentArcsec, kMaxMisalignmentArcsec));
   app->add_option("--rig", o->rig_file,
                   "Rig TOML file (docs/formats.md); --size and "
                   "--misalign-* override its values");

@@ -6,6 +6,8 @@
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/image/output_folder.hpp"
 #include "marsokhod/imaging/pictures/colormap.hpp"
+#include "marsokhod/io/files/input_error.hpp"
+#include "marsokhod/io/paths/contained_path.hpp"
 #include "marsokhod/nav/stereo/disparity_metrics.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <variant>
 
 namespace marsokhod::eval {
@@ -92,26 +95,52 @@ void distort(imaging::Image<std::uint8_t>& image, double gain, double offset) {
 }
 
 int search_range(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
+  // The reader bounds max_gt_disp_px to (0, kMaxImageSide], so the rounded value fits an int.
   const int range = entry.max_truth_disparity
                         ? static_cast<int>(std::ceil(*entry.max_truth_disparity))
                         : options.fallback_max_disparity;
   if (range < 1 || range >= entry.width)
     fail(options, entry,
-         fmt::format("search range {} px does not fit in an image {} px wide", range, entry.width));
+         fmt::format("search range {} px{} does not fit in an image {} px wide", range,
+                     entry.max_truth_disparity ? "" : " (--max-disparity)", entry.width));
   return range;
+}
+
+fs::path output_path(const fs::path& dir, const std::string& file) {
+  try {
+    return io::path_inside(dir, file, "output file");
+  } catch (const io::InputError& error) {
+    throw EvaluationError(error.what());
+  }
 }
 
 void write_outputs(const StereoEvaluationOptions& options, const std::string& name,
                    const imaging::Image<float>& disparity) {
   const fs::path dir = options.out_dir;
+  // The names come from the index; the reader refuses any that could leave the folder, and
+  // path_inside makes sure of it here, where they become paths.
+  const fs::path pfm = output_path(dir, name + "_disparity.pfm");
+  const fs::path png = output_path(dir, name + "_disparity.png");
   imaging::prepare_output_folder(dir);
-  imaging::write_image(dir / (name + "_disparity.pfm"), disparity.view());
+  imaging::write_image(pfm, disparity.view());
   imaging::ColormapOptions colour;
   colour.min_value = 0.0F;
   colour.unit = "px";
   colour.title = "disparity";
-  imaging::write_image(dir / (name + "_disparity.png"),
-                       imaging::false_colour(disparity.view(), colour).view());
+  imaging::write_image(png, imaging::false_colour(disparity.view(), colour).view());
+}
+
+// The matcher refuses options that do not suit this pair (more pyramid layers than its size
+// allows); the message then says which pair of the index it was.
+nav::StereoResult match(const StereoEvaluationOptions& options, const StereoPairEntry& entry,
+                        const imaging::Image<std::uint8_t>& left,
+                        const imaging::Image<std::uint8_t>& right,
+                        const nav::StereoOptions& stereo) {
+  try {
+    return nav::match_stereo(left.view(), right.view(), stereo);
+  } catch (const std::invalid_argument& error) {
+    fail(options, entry, fmt::format("{}: {}", entry.left.string(), error.what()));
+  }
 }
 
 PairEvaluation evaluate(const StereoEvaluationOptions& options, const StereoPairEntry& entry) {
@@ -126,7 +155,7 @@ PairEvaluation evaluate(const StereoEvaluationOptions& options, const StereoPair
   nav::StereoOptions stereo = options.stereo;
   stereo.max_disparity = pair.max_disparity;
   const auto start = std::chrono::steady_clock::now();
-  const nav::StereoResult result = nav::match_stereo(left.view(), right.view(), stereo);
+  const nav::StereoResult result = match(options, entry, left, right, stereo);
   pair.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   pair.valid_percent = 100.0 * static_cast<double>(result.valid_pixels) /
                        static_cast<double>(entry.width * entry.height);

@@ -5,6 +5,7 @@
 #include "marsokhod/eval/terrain/terrain_pictures.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/image/output_folder.hpp"
+#include "marsokhod/io/numbers/checked_number.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/world/render/renderer.hpp"
 
@@ -13,10 +14,14 @@
 #include <chrono>
 #include <exception>
 #include <filesystem>
-#include <regex>
+#include <limits>
+#include <optional>
+#include <string_view>
 
 namespace marsokhod::eval {
 namespace {
+
+constexpr std::uint64_t kMaxSeeds = 10000;
 
 void write_picture(const std::string& folder, std::uint64_t seed, const TerrainComparison& site) {
   const std::filesystem::path path =
@@ -31,17 +36,21 @@ void write_picture(const std::string& folder, std::uint64_t seed, const TerrainC
 } // namespace
 
 SeedRange parse_seed_range(const std::string& text) {
-  static const std::regex pattern(R"(^(\d{1,18})(\.\.(\d{1,18}))?$)");
-  std::smatch match;
-  if (!std::regex_match(text, match, pattern))
-    throw OptionError(fmt::format("'{}': expected A..B (e.g. 1..50) or a single seed", text));
-  const std::uint64_t first = std::stoull(match[1].str());
-  const std::uint64_t last = match[3].matched ? std::stoull(match[3].str()) : first;
-  if (last < first)
+  const std::size_t dots = text.find("..");
+  const std::string_view whole(text);
+  const std::optional<std::uint64_t> first =
+      io::parse_integer<std::uint64_t>(whole.substr(0, dots));
+  const std::optional<std::uint64_t> last =
+      dots == std::string::npos ? first : io::parse_integer<std::uint64_t>(whole.substr(dots + 2));
+  if (!first || !last)
+    throw OptionError(fmt::format("'{}': expected A..B (e.g. 1..50) or a single seed, each a whole "
+                                  "number from 0 to {}",
+                                  text, std::numeric_limits<std::uint64_t>::max()));
+  if (*last < *first)
     throw OptionError(fmt::format("'{}': the last seed is below the first", text));
-  if (last - first >= 10000)
-    throw OptionError(fmt::format("'{}': at most 10000 seeds at a time", text));
-  return {first, last};
+  if (*last - *first >= kMaxSeeds)
+    throw OptionError(fmt::format("'{}': at most {} seeds at a time", text, kMaxSeeds));
+  return {*first, *last};
 }
 
 SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainEvaluationOptions& cli) {
@@ -96,9 +105,11 @@ std::vector<SeedOutcome> evaluate_seeds(const SeedRange& range,
     imaging::prepare_output_folder(options.pictures);
   std::vector<SeedOutcome> outcomes;
   const std::uint64_t count = range.last - range.first + 1;
-  for (std::uint64_t seed = range.first; seed <= range.last; ++seed) {
+  // Counted, not compared with range.last: a range ending at the largest seed must not wrap.
+  for (std::uint64_t position = 1; position <= count; ++position) {
+    const std::uint64_t seed = range.first + (position - 1);
     if (progress)
-      progress(seed - range.first + 1, count, seed);
+      progress(position, count, seed);
     outcomes.push_back(evaluate_seed(seed, options));
   }
   return outcomes;

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace marsokhod {
 namespace {
@@ -132,6 +133,84 @@ TEST_F(EvalStereoCommand, AShortLineAndABadNumberAreRefused) {
       index(kHeader +
             "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\tfour\t8\t128\t96\t14\t-\n"),
       {"PAIRS.tsv:2", "gt_scale", "four"});
+}
+
+// Every file under `dir`, to tell that a run wrote nothing there.
+std::vector<fs::path> files_under(const fs::path& dir) {
+  std::vector<fs::path> files;
+  if (fs::exists(dir))
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir))
+      files.push_back(entry.path());
+  return files;
+}
+
+// The example: a pair named ../../x once wrote ../../x_disparity.pfm beside --out, exit 0.
+TEST_F(EvalStereoCommand, APairNameThatWouldLeaveTheOutputFolderIsRefusedAndNothingIsWritten) {
+  const fs::path out = dir_ / "deep" / "out";
+  for (const std::string& name :
+       std::vector<std::string>{"../../x", "../x", (dir_ / "abs").string()}) {
+    const fs::path file =
+        index(kHeader + name + "\tdots_left.pgm\tdots_right.pgm\t-\t-\t-\t128\t96\t14\t-\n");
+    const auto before = files_under(dir_);
+    const auto result =
+        run_marsokhod("eval stereo '" + file.string() + "' --out '" + out.string() + "'");
+    EXPECT_EQ(result.exit_code, 1) << name;
+    EXPECT_NE(result.err.find(file.string() + ":2: pair name '" + name + "'"), std::string::npos)
+        << result.err;
+    EXPECT_EQ(files_under(dir_), before) << name;
+  }
+}
+
+TEST_F(EvalStereoCommand, TwoPairsOfOneNameAreRefusedBeforeEitherOverwritesTheOther) {
+  const std::string line = "twin\tdots_left.pgm\tdots_right.pgm\t-\t-\t-\t128\t96\t14\t-\n";
+  expect_index_error(index(kHeader + line + line), {"PAIRS.tsv:3", "'twin'", "line 2"});
+}
+
+// gt_scale inf once scored a perfect 0 %, max_gt_disp_px nan a search range of -2147483648 px.
+TEST_F(EvalStereoCommand, NonFiniteNumbersInTheIndexAreRefusedNamingTheColumn) {
+  expect_index_error(
+      index(kHeader +
+            "eight\tdots_left.pgm\tdots_right.pgm\tdots_gt.pgm\tinf\t8\t128\t96\t14\t-\n"),
+      {"PAIRS.tsv:2", "gt_scale", "'inf'"});
+  for (const char* largest : {"nan", "1e309", "1e300", "-5"}) {
+    const auto result =
+        run_marsokhod("eval stereo '" +
+                      index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\t-\t-\t-\t128\t96\t" +
+                            largest + "\t-\n")
+                          .string() +
+                      "'");
+    EXPECT_EQ(result.exit_code, 1) << largest;
+    EXPECT_NE(result.err.find("PAIRS.tsv:2: "), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find("max_gt_disp_px"), std::string::npos) << result.err;
+    EXPECT_EQ(result.err.find("-2147483648"), std::string::npos) << result.err;
+  }
+}
+
+TEST_F(EvalStereoCommand, OptionsThatDoNotSuitAPairNameItsLine) {
+  const fs::path file =
+      index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\t-\t-\t-\t128\t96\t-\t-\n");
+  // 6 pyramid layers would leave a 4x3 top layer of a 128x96 image.
+  const auto levels = run_marsokhod("eval stereo '" + file.string() + "' --levels 6");
+  EXPECT_EQ(levels.exit_code, 1);
+  EXPECT_NE(levels.err.find("PAIRS.tsv:2: "), std::string::npos) << levels.err;
+  EXPECT_NE(levels.err.find("pyramid layers"), std::string::npos) << levels.err;
+  const auto range = run_marsokhod("eval stereo '" + file.string() + "' --max-disparity 4096");
+  EXPECT_EQ(range.exit_code, 1);
+  EXPECT_NE(range.err.find("PAIRS.tsv:2: search range 4096 px (--max-disparity) does not fit in "
+                           "an image 128 px wide"),
+            std::string::npos)
+      << range.err;
+}
+
+TEST_F(EvalStereoCommand, AnOutThatIsAnExistingFileIsAnErrorNamingIt) {
+  const fs::path file =
+      index(kHeader + "eight\tdots_left.pgm\tdots_right.pgm\t-\t-\t-\t128\t96\t14\t-\n");
+  const fs::path taken = dir_ / "taken";
+  std::ofstream(taken) << "x";
+  const auto result =
+      run_marsokhod("eval stereo '" + file.string() + "' --out '" + taken.string() + "'");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find(taken.string()), std::string::npos) << result.err;
 }
 
 TEST(EvalStereoRealData, ReportsEveryPairAndAMeanBelowTheSgbmPeer) {

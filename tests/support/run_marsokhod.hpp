@@ -2,14 +2,20 @@
 #pragma once
 
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <spawn.h>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
+
+extern char** environ;
 
 namespace marsokhod::testing {
 
@@ -21,8 +27,10 @@ struct CommandResult {
 };
 
 /// Runs the built `marsokhod` binary with a shell-quoted argument string; stdout and stderr are
-/// captured separately through temporary files so neither can block the other.
-inline CommandResult run_marsokhod(const std::string& arguments) {
+/// captured separately through temporary files so neither can block the other. A non-empty
+/// `stdout_file` (e.g. /dev/full) receives stdout instead; `out` is then empty.
+inline CommandResult run_marsokhod(const std::string& arguments,
+                                   const std::string& stdout_file = {}) {
   namespace fs = std::filesystem;
   static int counter = 0;
   const fs::path dir = fs::temp_directory_path() / "marsokhod-cli-tests";
@@ -31,7 +39,8 @@ inline CommandResult run_marsokhod(const std::string& arguments) {
   const fs::path out_path = dir / (stem + ".out");
   const fs::path err_path = dir / (stem + ".err");
   const std::string command = std::string("'") + MARSOKHOD_BINARY + "' " + arguments + " >'" +
-                              out_path.string() + "' 2>'" + err_path.string() + "' </dev/null";
+                              (stdout_file.empty() ? out_path.string() : stdout_file) + "' 2>'" +
+                              err_path.string() + "' </dev/null";
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -44,6 +53,61 @@ inline CommandResult run_marsokhod(const std::string& arguments) {
   result.out = slurp(out_path);
   result.err = slurp(err_path);
   fs::remove(out_path);
+  fs::remove(err_path);
+  return result;
+}
+
+/// Runs the binary with `arguments` (one element each, no shell) and its standard output the
+/// write end of a pipe whose read end is already closed: every write fails with EPIPE, with no
+/// race against a reader that exits. SIGPIPE is reset to its default in the child, so a binary
+/// that does not ignore it dies by the signal (exit_code 128 + SIGPIPE). `out` stays empty.
+inline CommandResult run_marsokhod_into_closed_pipe(const std::vector<std::string>& arguments) {
+  namespace fs = std::filesystem;
+  static int counter = 0;
+  const fs::path dir = fs::temp_directory_path() / "marsokhod-cli-tests";
+  fs::create_directories(dir);
+  const fs::path err_path =
+      dir / (std::to_string(::getpid()) + "-pipe-" + std::to_string(counter++) + ".err");
+  CommandResult result;
+  int fds[2];
+  if (::pipe(fds) != 0)
+    return result;
+  ::close(fds[0]);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addclose(&actions, fds[1]);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  std::vector<std::string> words = {MARSOKHOD_BINARY};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words)
+    argv.push_back(word.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned =
+      posix_spawn(&pid, MARSOKHOD_BINARY, &actions, &attributes, argv.data(), environ);
+  ::close(fds[1]);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  if (spawned != 0)
+    return result;
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  std::ifstream in(err_path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  result.err = text.str();
   fs::remove(err_path);
   return result;
 }

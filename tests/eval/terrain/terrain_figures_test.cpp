@@ -1,10 +1,12 @@
 // The figures of `eval terrain` from hand-made seed outcomes, and the seed-range parser.
 #include "marsokhod/eval/common/errors.hpp"
+#include "marsokhod/eval/terrain/terrain_evaluation.hpp"
 #include "marsokhod/eval/terrain/terrain_figures.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -116,12 +118,50 @@ TEST(SeedRange, MalformedBackwardsAndLongRangesAreOptionErrorsQuotingTheText) {
     ADD_FAILURE() << "no OptionError for " << text;
     return std::string();
   };
-  EXPECT_EQ(message("abc"), "'abc': expected A..B (e.g. 1..50) or a single seed");
-  EXPECT_EQ(message("1.."), "'1..': expected A..B (e.g. 1..50) or a single seed");
-  EXPECT_EQ(message("-1..2"), "'-1..2': expected A..B (e.g. 1..50) or a single seed");
+  const std::string expected = ": expected A..B (e.g. 1..50) or a single seed, each a whole "
+                               "number from 0 to 18446744073709551615";
+  EXPECT_EQ(message("abc"), "'abc'" + expected);
+  EXPECT_EQ(message("1.."), "'1..'" + expected);
+  EXPECT_EQ(message("-1..2"), "'-1..2'" + expected);
   EXPECT_EQ(message("5..3"), "'5..3': the last seed is below the first");
   EXPECT_EQ(message("1..10001"), "'1..10001': at most 10000 seeds at a time");
   EXPECT_NO_THROW(parse_seed_range("1..10000"));
+}
+
+// Seeds are read as checked unsigned 64-bit integers: no wrap, no junk, the whole range legal.
+TEST(SeedRange, SeedsAreWholeUnsigned64BitNumbersWithoutWrapOrJunk) {
+  // 2^64 - 1 is the largest seed `world --seed` takes; 2^64 would wrap to 0.
+  const SeedRange top = parse_seed_range("18446744073709551614..18446744073709551615");
+  EXPECT_EQ(top.first, 18446744073709551614U);
+  EXPECT_EQ(top.last, 18446744073709551615U);
+  // Leading zeros are decimal, not octal.
+  EXPECT_EQ(parse_seed_range("010").first, 10U);
+  std::vector<std::string> taken;
+  for (const char* text : {"18446744073709551616", "1..18446744073709551616", "", "..", "1x",
+                           "1..2x", "+1", "1e3", "0x10", "1...3", "1..2..3", " 1", "1 ..2"}) {
+    try {
+      parse_seed_range(text);
+      taken.push_back(text);
+    } catch (const OptionError&) {
+    }
+  }
+  EXPECT_EQ(taken, std::vector<std::string>{});
+}
+
+// A range ending at the largest seed is counted, so the loop over it ends.
+TEST(SeedRange, ARangeEndingAtTheLargestSeedVisitsEachSeedOnce) {
+  std::vector<std::uint64_t> seen;
+  TerrainEvaluationOptions options;
+  options.size = 32;
+  options.terrain_size = 16.0;
+  evaluate_seeds(parse_seed_range("18446744073709551615"), options,
+                 [&](std::uint64_t position, std::uint64_t count, std::uint64_t seed) {
+                   EXPECT_EQ(position, 1U);
+                   EXPECT_EQ(count, 1U);
+                   seen.push_back(seed);
+                 });
+  ASSERT_EQ(seen.size(), 1U);
+  EXPECT_EQ(seen.front(), 18446744073709551615U);
 }
 
 } // namespace

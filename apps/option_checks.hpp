@@ -1,0 +1,55 @@
+// The one way the command line checks a numeric option: finite, in a closed range, no wrap.
+#pragma once
+
+#include "marsokhod/io/numbers/checked_number.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <concepts>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace marsokhod::apps {
+
+/// The name every check of this module carries, so that a test can tell that an option has one
+/// (CLI::Option::get_validator(kCheckedNumber)).
+inline constexpr const char* kCheckedNumber = "checked-number";
+
+/// A finite decimal number between `low` and `high`, both included: "nan", "inf", "1e309",
+/// "0x10", "1x", "" and values outside are refused with a message quoting the value (CLI11
+/// puts the option's name before it, and the command line exits 2).
+CLI::Validator real_between(double low, double high);
+
+namespace detail {
+/// A validator named kCheckedNumber that runs `check` and shows `description` in --help.
+CLI::Validator named_check(std::function<std::string(std::string&)> check,
+                           const std::string& description);
+} // namespace detail
+
+/// A decimal integer between `low` and `high`, both included, read without wrap ("-1" is not
+/// an unsigned, "4294967296" not an int) or junk ("1.5", "0x10", "1e3", "+1"). The text is
+/// rewritten in canonical decimal, so that CLI11's own conversion (which would read "010" as
+/// octal) gives exactly the value that was checked: attach it with Option::transform, which
+/// (unlike Option::check) keeps the rewrite.
+template <std::integral Int>
+CLI::Validator integer_between(Int low, Int high) {
+  const std::string range = fmt::format("between {} and {}", low, high);
+  return detail::named_check(
+      [low, high, range](std::string& text) -> std::string {
+        const std::optional<Int> value = io::parse_integer<Int>(text);
+        if (!value || *value < low || *value > high)
+          return fmt::format("'{}' is not a whole number {}", text, range);
+        text = fmt::format("{}", *value);
+        return {};
+      },
+      fmt::format("{}..{}", low, high));
+}
+
+/// A decimal integer that is one of `values` (e.g. the image sides 128 and 256); attach it with
+/// Option::transform, as integer_between.
+CLI::Validator integer_one_of(std::vector<int> values);
+
+} // namespace marsokhod::apps
