@@ -5,9 +5,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstring>
-#include <new>
+#include <cerrno>
 #include <stdexcept>
+#include <sys/mman.h>
+#include <system_error>
 
 namespace marsokhod::emulator {
 namespace {
@@ -23,15 +24,20 @@ bool is_power_of_two(std::size_t value) {
   return value != 0 && (value & (value - 1)) == 0;
 }
 
-std::byte* allocate_host_bytes(std::size_t size) {
-  auto* bytes =
-      static_cast<std::byte*>(::operator new (size, std::align_val_t{MemoryArena::kMaxAlignment}));
-  std::memset(bytes, 0, size);
-  return bytes;
-}
-
-void free_host_bytes(std::byte* bytes) {
-  ::operator delete (bytes, std::align_val_t{MemoryArena::kMaxAlignment});
+// The node's bytes, mapped rather than allocated: the kernel hands out zeroed pages as they are
+// first touched, so a node with 2 GB of external RAM costs the host only what its programs
+// use. MAP_NORESERVE: no swap is set aside for the untouched rest. Page-aligned, which covers
+// kMaxAlignment.
+std::byte* map_host_bytes(std::size_t size) {
+  void* bytes = ::mmap(nullptr, size, PROT_READ | PROT_WRITE,
+                       MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  if (bytes == MAP_FAILED) {
+    const int error = errno;
+    throw HostMemoryError(
+        fmt::format("cannot map {} bytes of host memory for a node's emulated memory: {}", size,
+                    std::generic_category().message(error)));
+  }
+  return static_cast<std::byte*>(bytes);
 }
 
 MemoryConfig checked(const MemoryConfig& config) {
@@ -61,8 +67,8 @@ const char* region_name(Placement placement) {
 } // namespace
 
 MemoryArena::MemoryArena(const MemoryConfig& config)
-    : config_(checked(config)),
-      bytes_(allocate_host_bytes(kExternalOffset + config.external_bytes), free_host_bytes) {
+    : config_(checked(config)), bytes_(map_host_bytes(kExternalOffset + config_.external_bytes),
+                                       HostBytesDeleter{kExternalOffset + config_.external_bytes}) {
   const std::size_t usable_on_chip = config_.on_chip_bytes - config_.reserved_on_chip_bytes;
   if (usable_on_chip > 0)
     on_chip_free_.emplace(config_.reserved_on_chip_bytes, usable_on_chip);
@@ -71,6 +77,10 @@ MemoryArena::MemoryArena(const MemoryConfig& config)
 }
 
 MemoryArena::~MemoryArena() = default;
+
+void MemoryArena::HostBytesDeleter::operator()(std::byte* bytes) const {
+  ::munmap(bytes, size);
+}
 
 Address MemoryArena::allocate_block(std::size_t bytes, std::size_t alignment, Placement placement,
                                     std::string_view owner, BlockKind kind) {

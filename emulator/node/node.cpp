@@ -5,6 +5,8 @@
 #include "marsokhod/emulator/links/link.hpp"
 #include "marsokhod/emulator/memory/memory_arena_hooks.hpp"
 
+#include <fmt/format.h>
+
 #include <atomic>
 #include <stdexcept>
 
@@ -18,6 +20,16 @@ CpuTiming timing_of(const CpuSpec& cpu) {
   timing.slices_before_deschedule = cpu.slices_before_deschedule;
   timing.preemption_latency = static_cast<Tick>(cpu.costs.event_latency_cycles) * cpu.cycle;
   return timing;
+}
+
+/// The node's memory; a host that cannot map it is an error naming the node.
+std::unique_ptr<MemoryArena> make_memory(const NodeSpec& spec) {
+  try {
+    return std::make_unique<MemoryArena>(spec.memory);
+  } catch (const HostMemoryError& error) {
+    throw HostMemoryError(fmt::format("node {} ({} KB of external memory): {}", spec.name,
+                                      spec.memory.external_bytes / 1024, error.what()));
+  }
 }
 
 /// Frees a process's workspace however the process ends (return or kill).
@@ -40,7 +52,7 @@ std::atomic<std::uint64_t> last_serial{0};
 Node::Node(Kernel& kernel, const NodeSpec& spec)
     : kernel_(&kernel), serial_(++last_serial), spec_(spec),
       cpu_(std::make_unique<Cpu>(kernel, spec.name, timing_of(spec.cpu))),
-      memory_(std::make_unique<MemoryArena>(spec.memory)), powered_(spec.powered) {
+      memory_(make_memory(spec)), powered_(spec.powered) {
   cpu_->set_node(this);
   attach_memory(*memory_, kernel, spec_.name);
   if (TraceSink* sink = kernel.trace()) {

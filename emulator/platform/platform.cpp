@@ -5,19 +5,23 @@
 #include "platform/platform_processor.hpp"
 #include "platform/platform_table_reader.hpp"
 
+#include "marsokhod/emulator/platform/platform_limits.hpp"
+#include "marsokhod/io/numbers/checked_number.hpp"
+
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
-#include <charconv>
+#include <limits>
 #include <map>
+#include <optional>
+#include <utility>
 
 namespace marsokhod::emulator {
 namespace {
 
 using detail::TableReader;
-
-// The T805 address space above #80001000 (T805.md, "Clock and memory").
-constexpr std::int64_t kMaxExternalKb = 0x7FFFF000LL / 1024;
+namespace limits = platform_limits;
 
 std::string describe(const std::string& file, int line, const std::string& key,
                      const std::string& problem) {
@@ -27,23 +31,36 @@ std::string describe(const std::string& file, int line, const std::string& key,
   return fmt::format("{}: '{}': {}", where, key, problem);
 }
 
-/// Visits every table of an array of tables, failing on anything else in it.
+/// Visits every table of an array of tables, failing on anything else in it and on more than
+/// `most` tables.
 template <typename Visit>
-void for_each_table(TableReader& top, std::string_view key, Visit visit) {
+void for_each_table(TableReader& top, std::string_view key, std::size_t most, Visit visit) {
   const toml::array* array = top.optional_array(key);
   if (array == nullptr)
     return;
+  std::size_t count = 0;
   for (const toml::node& element : *array) {
     if (!element.is_table())
       top.fail(key, fmt::format("must be written as [[{}]] tables", key));
+    if (++count > most)
+      throw PlatformError(top.file(), static_cast<int>(element.source().begin.line),
+                          std::string(key),
+                          fmt::format("a platform has at most {} [[{}]] tables", most, key));
     visit(*element.as_table());
   }
 }
 
+bool is_name_character(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-';
+}
+
 std::string read_name(TableReader& reader) {
   const std::string name = reader.string("name");
-  if (name.empty() || name.find_first_of(". \t") != std::string::npos)
-    reader.fail("name", fmt::format("'{}' must be non-empty, without dots or spaces", name));
+  if (name.empty() || name.size() > limits::kMaxNameLength ||
+      !std::all_of(name.begin(), name.end(), is_name_character))
+    reader.fail("name", fmt::format("'{}' must be 1 to {} letters, digits, '_' or '-'", name,
+                                    limits::kMaxNameLength));
   return name;
 }
 
@@ -59,12 +76,10 @@ NodeSpec read_node(TableReader& node, const detail::ProcessorSpec& processor) {
   spec.cpu = processor.cpu;
   spec.cpu.cycle = grade->second;
   spec.cpu.costs.wait_states =
-      static_cast<std::int32_t>(node.optional_integer("wait_states").value_or(0));
-  if (spec.cpu.costs.wait_states < 0 || spec.cpu.costs.wait_states > 64)
-    node.fail("wait_states", "must be between 0 and 64");
-  const std::int64_t external_kb = node.integer_at_least("external_kb", 1);
-  if (external_kb > kMaxExternalKb)
-    node.fail("external_kb", fmt::format("exceeds the T805 address space ({} KB)", kMaxExternalKb));
+      node.optional_integer_in("wait_states", 0, limits::kMaxWaitStates, 0, "cycles");
+  const std::int64_t external_kb =
+      node.integer_in("external_kb", std::int64_t{1}, limits::kMaxExternalKb,
+                      "KB, the T805 address space above #80001000");
   spec.memory =
       MemoryConfig{processor.cpu.on_chip_bytes, static_cast<std::size_t>(external_kb) * 1024,
                    processor.reserved_on_chip_bytes};
@@ -88,13 +103,14 @@ DeviceSpec read_device(TableReader& device) {
   spec.line = static_cast<int>(device.table().source().begin.line);
   spec.name = read_name(device);
   spec.kind = read_device_kind(device);
-  spec.links = static_cast<int>(device.integer_at_least("links", 1));
+  spec.links = device.integer_in("links", 1, limits::kMaxDeviceLinks);
   spec.powered = device.boolean("powered", true);
   if (spec.kind == DeviceKind::frame_store) {
-    spec.cameras = static_cast<int>(device.integer_at_least("cameras", 1));
-    spec.image_width = static_cast<int>(device.integer_at_least("image_width", 1));
-    spec.image_height = static_cast<int>(device.integer_at_least("image_height", 1));
-    spec.bits_per_pixel = static_cast<int>(device.integer_at_least("bits_per_pixel", 1));
+    spec.cameras = device.integer_in("cameras", 1, limits::kMaxCameras,
+                                     "cameras, chosen by a one-byte request");
+    spec.image_width = device.integer_in("image_width", 1, limits::kMaxImageSide, "pixels");
+    spec.image_height = device.integer_in("image_height", 1, limits::kMaxImageSide, "pixels");
+    spec.bits_per_pixel = device.integer_in("bits_per_pixel", 1, 16);
     if (spec.bits_per_pixel != 8 && spec.bits_per_pixel != 16)
       device.fail("bits_per_pixel", "must be 8 or 16");
   }
@@ -102,64 +118,92 @@ DeviceSpec read_device(TableReader& device) {
   return spec;
 }
 
+/// A link speed of the platform file: an integer the processor offers.
+int read_speed(TableReader& reader, std::string_view key, const detail::ProcessorSpec& processor,
+               std::optional<int> fallback) {
+  const int speed =
+      fallback ? reader.optional_integer_in(key, limits::kMinLinkMbps, limits::kMaxLinkMbps,
+                                            *fallback, "Mbit/s")
+               : reader.integer_in(key, limits::kMinLinkMbps, limits::kMaxLinkMbps, "Mbit/s");
+  const auto& speeds = processor.link_speeds_mbps;
+  if (std::find(speeds.begin(), speeds.end(), speed) == speeds.end())
+    reader.fail(key, fmt::format("{} Mbit/s is not a link speed of the {} ({} Mbit/s)", speed,
+                                 processor.type, fmt::join(speeds, ", ")));
+  return speed;
+}
+
+/// The canonical link number of "linkN": N decimal, without sign or leading zero.
+std::optional<int> link_number(std::string_view text) {
+  constexpr std::string_view kLink = "link";
+  if (!text.starts_with(kLink))
+    return std::nullopt;
+  const std::string_view digits = text.substr(kLink.size());
+  if (digits.empty() || (digits.size() > 1 && digits.front() == '0') ||
+      !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return std::nullopt;
+  return io::parse_integer<int>(digits);
+}
+
+/// Reads the [[wire]] tables: each end parsed once into (owner, link number), so that a link
+/// end is wired at most once however it is written.
 class WireReader {
 public:
   WireReader(const PlatformSpec& platform, const detail::ProcessorSpec& processor)
-      : platform_(platform), processor_(processor) {}
+      : processor_(processor) {
+    for (const NodeSpec& node : platform.nodes)
+      owners_.emplace(node.name, Owner{node.links, false});
+    for (const DeviceSpec& device : platform.devices)
+      owners_.emplace(device.name, Owner{device.links, true});
+  }
 
   WireSpec read(TableReader& wire, int default_speed) {
     WireSpec spec;
     spec.line = static_cast<int>(wire.table().source().begin.line);
     spec.a = endpoint(wire, "a");
     spec.b = endpoint(wire, "b");
-    spec.speed_mbps = static_cast<int>(wire.optional_integer("speed_mbps").value_or(default_speed));
-    check_speed(wire, "speed_mbps", spec.speed_mbps);
+    spec.speed_mbps = read_speed(wire, "speed_mbps", processor_, default_speed);
     spec.broken = wire.boolean("broken", false);
     wire.reject_unknown_keys();
     return spec;
   }
 
-  void check_speed(TableReader& reader, std::string_view key, std::int64_t speed) const {
-    const auto& speeds = processor_.link_speeds_mbps;
-    if (std::find(speeds.begin(), speeds.end(), speed) == speeds.end())
-      reader.fail(key, fmt::format("{} Mbit/s is not a link speed of the {} ({} Mbit/s)", speed,
-                                   processor_.type, fmt::join(speeds, ", ")));
-  }
-
 private:
+  struct Owner {
+    int links;
+    bool device;
+  };
+
   LinkEndpoint endpoint(TableReader& wire, std::string_view key) {
     const std::string text = wire.string(key);
-    const auto dot = text.rfind(".link");
-    if (dot == std::string::npos || dot == 0)
-      wire.fail(key, fmt::format("'{}' must be written NAME.linkN", text));
-    int link = -1;
-    const char* digits = text.data() + dot + 5;
-    const char* end = text.data() + text.size();
-    const auto [parsed_end, error] = std::from_chars(digits, end, link);
-    if (digits == end || parsed_end != end || error != std::errc{} || link < 0)
-      wire.fail(key, fmt::format("'{}' must be written NAME.linkN", text));
-    LinkEndpoint point{text.substr(0, dot), link, false};
-    int links = 0;
-    if (const NodeSpec* node = platform_.find_node(point.owner)) {
-      links = node->links;
-    } else if (const DeviceSpec* device = platform_.find_device(point.owner)) {
-      links = device->links;
-      point.device = true;
-    } else {
+    const auto dot = text.find('.');
+    const std::optional<int> link = dot == std::string::npos
+                                        ? std::nullopt
+                                        : link_number(std::string_view(text).substr(dot + 1));
+    if (dot == 0 || !link)
+      wire.fail(key, fmt::format("'{}' must be written NAME.linkN, N a link number without sign "
+                                 "or leading zeros (module0.link0)",
+                                 text));
+    LinkEndpoint point{text.substr(0, dot), *link, false};
+    const auto owner = owners_.find(point.owner);
+    if (owner == owners_.end())
       wire.fail(key, fmt::format("'{}' is no node or device of this platform", point.owner));
-    }
-    if (link >= links)
+    point.device = owner->second.device;
+    const int links = owner->second.links;
+    if (point.link >= links)
       wire.fail(key, fmt::format("{} has {} links (link0..link{}); link{} does not exist",
-                                 point.owner, links, links - 1, link));
-    const auto [used, fresh] = used_.emplace(text, wire.line_of(key));
+                                 point.owner, links, links - 1, point.link));
+    const int line = wire.line_of(key);
+    const auto [used, fresh] = wired_.emplace(std::pair(point.owner, point.link), line);
     if (!fresh)
-      wire.fail(key, fmt::format("{} is already wired on line {}", text, used->second));
+      wire.fail(key, fmt::format("{} is already wired on line {} (a link end takes one wire)",
+                                 point.text(), used->second));
     return point;
   }
 
-  const PlatformSpec& platform_;
   const detail::ProcessorSpec& processor_;
-  std::map<std::string, int> used_;
+  std::map<std::string, Owner, std::less<>> owners_;
+  /// Each wired end, parsed, and the line that wired it.
+  std::map<std::pair<std::string, int>, int> wired_;
 };
 
 void check_unique_names(const PlatformSpec& platform) {
@@ -174,6 +218,20 @@ void check_unique_names(const PlatformSpec& platform) {
     check(node.name, node.line);
   for (const DeviceSpec& device : platform.devices)
     check(device.name, device.line);
+}
+
+/// The processor file a platform names; a file that cannot be read at all is reported at the
+/// platform's 'processor' key, so that the message shows where the path came from.
+detail::ProcessorSpec read_processor(TableReader& reader, const std::filesystem::path& platform) {
+  const std::string named = reader.string("processor");
+  if (named.empty())
+    reader.fail("processor", "must name the processor file (relative to this file)");
+  const std::filesystem::path file = platform.parent_path() / named;
+  try {
+    return detail::load_processor(file.string());
+  } catch (const detail::UnreadableFileError& error) {
+    reader.fail("processor", error.what());
+  }
 }
 
 } // namespace
@@ -214,7 +272,7 @@ const WireSpec* PlatformSpec::wire_at(const LinkEndpoint& endpoint) const {
 PlatformSpec load_platform(const std::filesystem::path& file) {
   PlatformSpec platform;
   platform.source = file.string();
-  const toml::table root = detail::parse_toml_file(platform.source);
+  const toml::table root = detail::parse_toml_file(platform.source, "platform file");
   TableReader top(root, platform.source, "the platform file");
   const toml::table* header = top.optional_table("platform");
   if (header == nullptr)
@@ -222,32 +280,32 @@ PlatformSpec load_platform(const std::filesystem::path& file) {
   TableReader reader(*header, platform.source, "[platform]");
   platform.name = reader.string("name");
   platform.description = reader.optional_string("description").value_or("");
-  const std::filesystem::path processor_file = file.parent_path() / reader.string("processor");
-  const detail::ProcessorSpec processor = detail::load_processor(processor_file.string());
+  const detail::ProcessorSpec processor = read_processor(reader, file);
   platform.processor_type = processor.type;
   platform.link_speeds_mbps = processor.link_speeds_mbps;
   platform.link_timing = processor.link_timing;
-
-  WireReader wires(platform, processor);
-  const auto default_speed = reader.integer("link_speed_mbps");
-  wires.check_speed(reader, "link_speed_mbps", default_speed);
+  const int default_speed = read_speed(reader, "link_speed_mbps", processor, std::nullopt);
   reader.reject_unknown_keys();
 
-  for_each_table(top, "node", [&](const toml::table& table) {
+  for_each_table(top, "node", limits::kMaxNodes, [&](const toml::table& table) {
     TableReader node(table, platform.source, "a [[node]]");
     platform.nodes.push_back(read_node(node, processor));
   });
   if (platform.nodes.empty())
     throw PlatformError(platform.source, 1, "node", "a platform needs at least one [[node]]");
-  for_each_table(top, "device", [&](const toml::table& table) {
+  for_each_table(top, "device", limits::kMaxDevices, [&](const toml::table& table) {
     TableReader device(table, platform.source, "a [[device]]");
     platform.devices.push_back(read_device(device));
   });
   check_unique_names(platform);
-  for_each_table(top, "wire", [&](const toml::table& table) {
-    TableReader wire(table, platform.source, "a [[wire]]");
-    platform.wires.push_back(wires.read(wire, static_cast<int>(default_speed)));
-  });
+  WireReader wires(platform, processor);
+  // Every wire takes two link ends, each at most once: more wires than that is refused by
+  // the ends themselves.
+  for_each_table(top, "wire", std::numeric_limits<std::size_t>::max(),
+                 [&](const toml::table& table) {
+                   TableReader wire(table, platform.source, "a [[wire]]");
+                   platform.wires.push_back(wires.read(wire, default_speed));
+                 });
   top.reject_unknown_keys();
   return platform;
 }

@@ -4,55 +4,62 @@
 
 #include "platform/platform_table_reader.hpp"
 
-#include <fmt/format.h>
+#include "marsokhod/emulator/platform/platform_limits.hpp"
 
-#include <limits>
+#include <fmt/format.h>
 
 namespace marsokhod::emulator::detail {
 namespace {
 
-constexpr std::int64_t kMaxCycles = std::numeric_limits<std::int32_t>::max();
+namespace limits = platform_limits;
 
 void read_scheduling(TableReader& processor, ProcessorSpec& spec) {
   spec.type = processor.string("type");
-  spec.links = static_cast<int>(processor.integer_at_least("links", 1));
-  spec.cpu.on_chip_bytes = static_cast<std::size_t>(processor.integer_at_least("on_chip_bytes", 1));
-  if (spec.cpu.on_chip_bytes > 4096)
-    processor.fail("on_chip_bytes", "the T805 address map has room for at most 4096 bytes on chip");
+  spec.links = processor.integer_in("links", 1, limits::kMaxLinks, "links, as on a T805");
+  spec.cpu.on_chip_bytes =
+      processor.integer_in<std::size_t>("on_chip_bytes", 1, limits::kMaxOnChipBytes,
+                                        "bytes, the room the T805 address map leaves on chip");
   spec.reserved_on_chip_bytes =
-      static_cast<std::size_t>(processor.integer_at_least("reserved_on_chip_bytes", 0));
-  if (spec.reserved_on_chip_bytes >= spec.cpu.on_chip_bytes)
-    processor.fail("reserved_on_chip_bytes", "leaves no on-chip memory to allocate");
-  spec.cpu.timeslice = processor.integer_at_least("timeslice_ns", 1) * kNanosecond;
-  spec.cpu.slices_before_deschedule =
-      static_cast<int>(processor.integer_at_least("slices_before_deschedule", 1));
-  spec.cpu.high_timer_tick = processor.integer_at_least("high_timer_tick_ns", 1) * kNanosecond;
-  spec.cpu.low_timer_tick = processor.integer_at_least("low_timer_tick_ns", 1) * kNanosecond;
+      processor.integer_in<std::size_t>("reserved_on_chip_bytes", 0, spec.cpu.on_chip_bytes - 1,
+                                        "bytes, leaving on-chip memory to allocate");
+  spec.cpu.timeslice = processor.integer_in("timeslice_ns", limits::kMinTimesliceNs,
+                                            limits::kMaxTimesliceNs, "ns, 1 us to 1 s") *
+                       kNanosecond;
+  spec.cpu.slices_before_deschedule = processor.integer_in<std::int32_t>(
+      "slices_before_deschedule", 1, limits::kMaxSlicesBeforeDeschedule, "timeslices");
+  const auto timer_tick = [&](std::string_view key) {
+    return processor.integer_in(key, limits::kMinTimerTickNs, limits::kMaxTimerTickNs,
+                                "ns, 1 ns to 1 ms, so that a timer wait 2^32 ticks ahead "
+                                "fits the emulator's clock") *
+           kNanosecond;
+  };
+  spec.cpu.high_timer_tick = timer_tick("high_timer_tick_ns");
+  spec.cpu.low_timer_tick = timer_tick("low_timer_tick_ns");
   CostTable& costs = spec.cpu.costs;
-  costs.external_access_cycles =
-      static_cast<std::int32_t>(processor.integer_at_least("external_access_cycles", 1));
-  costs.event_latency_cycles =
-      static_cast<std::int32_t>(processor.integer_at_least("event_latency_cycles", 0));
-  costs.event_latency_max_cycles = static_cast<std::int32_t>(
-      processor.integer_at_least("event_latency_max_cycles", costs.event_latency_cycles));
+  costs.external_access_cycles = processor.integer_in(
+      "external_access_cycles", limits::kMinExternalAccessCycles, limits::kMaxExternalAccessCycles,
+      "cycles, six EMI T-states of one to four half-cycles");
+  costs.event_latency_cycles = processor.integer_in<std::int32_t>(
+      "event_latency_cycles", 0, limits::kMaxInstructionCycles, "cycles");
+  costs.event_latency_max_cycles =
+      processor.integer_in("event_latency_max_cycles", costs.event_latency_cycles,
+                           limits::kMaxInstructionCycles, "cycles, at least event_latency_cycles");
 }
 
 void read_link_speeds(TableReader& processor, ProcessorSpec& spec) {
-  const toml::array* speeds = processor.optional_array("link_speeds_mbps");
-  if (speeds == nullptr || speeds->empty())
+  if (processor.optional_array("link_speeds_mbps") == nullptr)
     processor.fail("link_speeds_mbps", "must list the link speeds in Mbit/s");
-  for (const toml::node& speed : *speeds) {
-    const auto value = speed.value_exact<std::int64_t>();
-    if (!value || *value <= 0 || *value > 1000)
-      processor.fail("link_speeds_mbps", "must hold positive integers (Mbit/s)");
-    spec.link_speeds_mbps.push_back(static_cast<int>(*value));
-  }
+  spec.link_speeds_mbps = processor.integers_in("link_speeds_mbps", limits::kMinLinkMbps,
+                                                limits::kMaxLinkMbps, "Mbit/s");
+  if (spec.link_speeds_mbps.empty())
+    processor.fail("link_speeds_mbps", "must list the link speeds in Mbit/s");
 }
 
 void read_speed_grades(const toml::table& table, const std::string& file, ProcessorSpec& spec) {
   TableReader grades(table, file, "[speed_grades]");
   for (const auto& [key, node] : table) {
-    const std::int64_t cycle_ps = grades.integer_at_least(key.str(), 1);
+    const Tick cycle_ps = grades.integer_in(key.str(), limits::kMinCyclePs, limits::kMaxCyclePs,
+                                            "ps per cycle, 1 GHz to 1 MHz");
     spec.speed_grades.emplace(std::string(key.str()), cycle_ps * kPicosecond);
   }
   if (spec.speed_grades.empty())
@@ -62,35 +69,31 @@ void read_speed_grades(const toml::table& table, const std::string& file, Proces
 
 void read_link_timing(const toml::table& table, const std::string& file, LinkTimingSpec& timing) {
   TableReader reader(table, file, "[link_timing]");
-  auto bits = [&](std::string_view key, double minimum) {
-    const double value = reader.number(key);
-    if (value < minimum || value > 1000)
-      reader.fail(key, fmt::format("{} bit times is impossible (at least {})", value, minimum));
-    return value;
+  const auto bits = [&](std::string_view key, double minimum) {
+    return reader.number_in(key, minimum, limits::kMaxLinkBits);
   };
   timing.data_packet_bits = bits("data_packet_bits", 1);
   timing.ack_packet_bits = bits("ack_packet_bits", 1);
   timing.ack_delay_bits = bits("ack_delay_bits", 0);
   timing.ack_turnaround_bits = bits("ack_turnaround_bits", 0);
-  timing.ack_turnaround_fixed = reader.integer_at_least("ack_turnaround_ps", 0) * kPicosecond;
+  timing.ack_turnaround_fixed = reader.integer_in("ack_turnaround_ps", Tick{0},
+                                                  limits::kMaxAckTurnaroundPs, "ps, 0 to 10 us") *
+                                kPicosecond;
   timing.inter_packet_gap_bits = bits("inter_packet_gap_bits", 0);
   reader.reject_unknown_keys();
 }
 
 InstructionCost read_cost(const toml::node& node, std::string_view name, TableReader& costs) {
-  if (const auto cycles = node.value_exact<std::int64_t>()) {
-    if (*cycles < 0 || *cycles > kMaxCycles)
-      costs.fail(name, "cycles must be a non-negative integer");
-    return InstructionCost{static_cast<std::int32_t>(*cycles), 0, false};
-  }
+  if (node.is_integer())
+    return InstructionCost{costs.integer_in(name, 0, limits::kMaxInstructionCycles, "cycles"), 0,
+                           false};
   if (!node.is_table())
     costs.fail(name, "must be a cycle count or { base = N, per_unit = N, fpu = BOOL }");
   TableReader entry(*node.as_table(), costs.file(), fmt::format("[cost_table] entry '{}'", name));
   InstructionCost cost;
-  cost.base = static_cast<std::int32_t>(entry.integer_at_least("base", 0));
-  cost.per_unit = static_cast<std::int32_t>(entry.optional_integer("per_unit").value_or(0));
-  if (cost.per_unit < 0)
-    entry.fail("per_unit", "must not be negative");
+  cost.base = entry.integer_in("base", 0, limits::kMaxInstructionCycles, "cycles");
+  cost.per_unit =
+      entry.optional_integer_in("per_unit", 0, limits::kMaxInstructionCycles, 0, "cycles per unit");
   cost.fpu = entry.boolean("fpu", false);
   entry.reject_unknown_keys();
   return cost;
@@ -125,7 +128,7 @@ const toml::table& require_table(TableReader& top, std::string_view key) {
 } // namespace
 
 ProcessorSpec load_processor(const std::string& file) {
-  const toml::table root = parse_toml_file(file);
+  const toml::table root = parse_toml_file(file, "processor file");
   TableReader top(root, file, "the processor file");
   ProcessorSpec spec;
   TableReader processor(require_table(top, "processor"), file, "[processor]");

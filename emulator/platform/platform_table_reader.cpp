@@ -1,4 +1,4 @@
-// Typed, checked reads of one TOML table of a platform file.
+// Typed, checked reads of one TOML table of a platform or processor file.
 
 #include "platform/platform_table_reader.hpp"
 
@@ -28,42 +28,42 @@ const toml::node& TableReader::require(std::string_view key) {
   return *node;
 }
 
-std::int64_t TableReader::integer(std::string_view key) {
-  const auto value = require(key).value_exact<std::int64_t>();
+bool TableReader::absent(std::string_view key) {
+  read_.emplace(key);
+  return table_.get(key) == nullptr;
+}
+
+std::int64_t TableReader::integer_of(std::string_view key, const toml::node& node) const {
+  // toml++ stores every TOML integer as an int64 and refuses a literal beyond it at parse time,
+  // so nothing can have wrapped before this point.
+  const auto value = node.value_exact<std::int64_t>();
   if (!value)
     fail(key, "must be an integer");
   return *value;
 }
 
-std::optional<std::int64_t> TableReader::optional_integer(std::string_view key) {
-  if (table_.get(key) == nullptr) {
-    read_.emplace(key);
-    return std::nullopt;
-  }
-  return integer(key);
+std::int64_t TableReader::raw_integer(std::string_view key) {
+  return integer_of(key, require(key));
 }
 
-std::int64_t TableReader::integer_at_least(std::string_view key, std::int64_t minimum) {
-  const std::int64_t value = integer(key);
-  if (value < minimum)
-    fail(key, fmt::format("{} is impossible, it must be at least {}", value, minimum));
-  return value;
+void TableReader::fail_range(std::string_view key, std::int64_t value, const std::string& low,
+                             const std::string& high, std::string_view why) const {
+  fail(key, fmt::format("{} is out of range: it must be between {} and {}{}{}", value, low, high,
+                        why.empty() ? "" : " ", why));
 }
 
-double TableReader::number(std::string_view key) {
+double TableReader::number_in(std::string_view key, double low, double high) {
   const toml::node& node = require(key);
-  const auto value = node.is_integer() ? node.value<double>() : node.value_exact<double>();
+  // An integer is taken as the nearest double (toml++'s value<double>() refuses one that does
+  // not convert exactly, which would call 2^63 - 1 "not a number").
+  const auto value = node.is_integer()
+                         ? std::optional<double>(static_cast<double>(integer_of(key, node)))
+                         : node.value_exact<double>();
   if (!value || !std::isfinite(*value))
-    fail(key, "must be a number");
+    fail(key, "must be a finite number");
+  if (!(*value >= low && *value <= high))
+    fail(key, fmt::format("{} is out of range: it must be {}", *value, io::range_text(low, high)));
   return *value;
-}
-
-std::optional<double> TableReader::optional_number(std::string_view key) {
-  if (table_.get(key) == nullptr) {
-    read_.emplace(key);
-    return std::nullopt;
-  }
-  return number(key);
 }
 
 std::string TableReader::string(std::string_view key) {
@@ -74,10 +74,8 @@ std::string TableReader::string(std::string_view key) {
 }
 
 std::optional<std::string> TableReader::optional_string(std::string_view key) {
-  if (table_.get(key) == nullptr) {
-    read_.emplace(key);
+  if (absent(key))
     return std::nullopt;
-  }
   return string(key);
 }
 
@@ -123,11 +121,14 @@ int TableReader::line_of(std::string_view key) const {
   return static_cast<int>(region.begin.line);
 }
 
-toml::table parse_toml_file(const std::string& file) {
+toml::table parse_toml_file(const std::string& file, std::string_view kind) {
   try {
-    return io::parse_toml_file(file, "platform file");
+    return io::parse_toml_file(file, kind);
   } catch (const io::InputError& error) {
-    throw PlatformError(file, error.line(), "", error.problem());
+    // A syntax error has a line; a file that could not be read has none.
+    if (error.line() > 0)
+      throw PlatformError(file, error.line(), "", error.problem());
+    throw UnreadableFileError(file, 0, "", error.problem());
   }
 }
 

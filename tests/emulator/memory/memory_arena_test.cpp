@@ -6,10 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <memory_resource>
 #include <sstream>
 #include <stdexcept>
+#include <sys/resource.h>
+#include <unistd.h>
 #include <vector>
 
 namespace marsokhod::emulator {
@@ -291,6 +296,57 @@ TEST(MemoryArenaInKernel, ScheduledBitFlipLandsAtItsTime) {
   EXPECT_EQ(after, 0x80U);
   EXPECT_THROW(schedule_bit_flip(kernel, arena, "node0", microseconds(9), 0x80002000U, 0),
                std::out_of_range);
+}
+
+/// Host memory of this process, in bytes: resident (touched) and virtual (mapped).
+std::size_t statm_bytes(int field) {
+  std::ifstream statm("/proc/self/statm");
+  std::size_t pages[2] = {0, 0};
+  statm >> pages[0] >> pages[1];
+  return pages[field] * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+}
+
+// The largest T805 memory is legal in a platform file; it must cost the host only what is used.
+constexpr std::size_t kLargestExternal = 0x7FFFF000U;
+
+TEST(MemoryArena, TheLargestExternalMemoryTakesHostMemoryOnlyWhereTouched) {
+  const std::size_t resident_before = statm_bytes(1);
+  MemoryArena arena(small_node(kLargestExternal));
+  EXPECT_LT(statm_bytes(1), resident_before + (std::size_t{64} << 20));
+  // Zero where never written, at both ends, and usable.
+  const Address last = arena.end_address() - 1;
+  EXPECT_EQ(std::to_integer<int>(*arena.pointer(last)), 0);
+  EXPECT_EQ(std::to_integer<int>(*arena.pointer(kExternal)), 0);
+  *arena.pointer(last) = std::byte{0x5A};
+  EXPECT_EQ(std::to_integer<int>(*arena.pointer(last)), 0x5A);
+  const Address block = arena.allocate_block(std::size_t{1} << 30, 4, Placement::external, "big");
+  EXPECT_EQ(block, kExternal);
+  EXPECT_LT(statm_bytes(1), resident_before + (std::size_t{64} << 20));
+}
+
+/// In a child: address space for a little more than one 2 GB node (as under `ulimit -v`), then
+/// two such nodes. Exits 0 when the second is a HostMemoryError stating the size.
+[[noreturn]] void map_two_largest_nodes_with_little_address_space() {
+  const rlim_t room = statm_bytes(0) + (std::size_t{2200} << 20);
+  const rlimit limit{room, room};
+  if (::setrlimit(RLIMIT_AS, &limit) != 0)
+    std::_Exit(2);
+  MemoryArena first(small_node(kLargestExternal));
+  try {
+    MemoryArena second(small_node(kLargestExternal));
+  } catch (const HostMemoryError& error) {
+    std::fputs(error.what(), stderr);
+    std::_Exit(std::strstr(error.what(), "2147483648 bytes") != nullptr ? 0 : 3);
+  } catch (...) {
+    std::_Exit(4);
+  }
+  std::_Exit(5);
+}
+
+TEST(MemoryArena, AHostThatCannotMapTheMemoryIsAHostMemoryErrorNotABadAlloc) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(map_two_largest_nodes_with_little_address_space(), testing::ExitedWithCode(0),
+              "cannot map 2147483648 bytes of host memory");
 }
 
 } // namespace

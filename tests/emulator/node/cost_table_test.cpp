@@ -7,9 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string_view>
+#include <sys/resource.h>
+#include <unistd.h>
 
 namespace marsokhod::emulator {
 namespace {
@@ -129,6 +134,36 @@ TEST(Node, WorkspaceExhaustionIsAMemoryFaultNamingTheProcess) {
   } catch (const MemoryFault& fault) {
     EXPECT_EQ(fault.process(), "third");
   }
+}
+
+/// In a child with address space for about one 2 GB node: a second is refused naming it.
+[[noreturn]] void build_two_largest_nodes_with_little_address_space() {
+  std::ifstream statm("/proc/self/statm");
+  std::size_t pages = 0;
+  statm >> pages;
+  const rlim_t room =
+      pages * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE)) + (std::size_t{2200} << 20);
+  const rlimit limit{room, room};
+  if (::setrlimit(RLIMIT_AS, &limit) != 0)
+    std::_Exit(2);
+  NodeSpec big = card();
+  big.memory.external_bytes = 0x7FFFF000U; // the T805 address space, legal in a platform file
+  Kernel kernel;
+  Node first(kernel, big);
+  big.name = "second";
+  try {
+    Node second(kernel, big);
+  } catch (const HostMemoryError& error) {
+    std::fputs(error.what(), stderr);
+    std::_Exit(0);
+  }
+  std::_Exit(3);
+}
+
+TEST(Node, NodeWhoseMemoryTheHostCannotMapIsAnErrorNamingTheNode) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(build_two_largest_nodes_with_little_address_space(), testing::ExitedWithCode(0),
+              "node second \\(2097148 KB of external memory\\): cannot map");
 }
 
 } // namespace

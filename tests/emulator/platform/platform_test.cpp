@@ -7,6 +7,8 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <sys/stat.h>
+#include <vector>
 
 namespace marsokhod::emulator {
 namespace {
@@ -173,6 +175,48 @@ TEST(Platform, LinkWiredTwiceIsAnError) {
   EXPECT_NE(std::string(error.what()).find("already wired"), std::string::npos) << error.what();
 }
 
+TEST(Platform, LinkEndWiredTwiceNamesBothLines) {
+  std::string text = base_platform() + "\n[[wire]]\na = \"a.link2\"\nb = \"a.link0\"\n";
+  const PlatformError error = expect_error("twice-lines.toml", text);
+  EXPECT_EQ(error.key(), "b");
+  EXPECT_EQ(error.line(), line_of(text, "b = \"a.link0\"")); // the second wiring
+  const std::string first = "line " + std::to_string(line_of(text, "a = \"a.link0\""));
+  EXPECT_NE(std::string(error.what()).find("a.link0 is already wired on " + first),
+            std::string::npos)
+      << error.what();
+}
+
+TEST(Platform, OnlyTheCanonicalLinkSpellingIsAccepted) {
+  // link00 and link-0 used to parse as link 0 and slip past the "already wired" check, which
+  // compared the text.
+  for (const std::string end :
+       {"a.link00", "a.link-0", "a.link+0", "a.link01", "a.link 0", "a.link", "a.link0x", "a.Link0",
+        ".link0", "a", "a.b.link0", "a.link99999999999999999999"}) {
+    SCOPED_TRACE(end);
+    std::string text = base_platform() + "\n[[wire]]\na = \"" + end + "\"\nb = \"b.link0\"\n";
+    const PlatformError error = expect_error("spelling.toml", text);
+    EXPECT_EQ(error.key(), "a");
+    EXPECT_EQ(error.line(), line_of(text, "a = \"" + end + "\""));
+  }
+}
+
+TEST(Platform, EveryLinkEndIsWiredOnceHoweverTheWiresAreOrdered) {
+  // The general rule: each (owner, link) pair at most once, whichever key and wire it is on.
+  const std::vector<std::string> ends = {"a.link1", "a.link2", "b.link0", "b.link1"};
+  for (const std::string& end : ends) {
+    for (const std::string& other : ends) {
+      if (other == end)
+        continue;
+      std::string text = base_platform() + "\n[[wire]]\na = \"" + end + "\"\nb = \"" + other +
+                         "\"\n\n[[wire]]\na = \"" + other + "\"\nb = \"b.link2\"\n";
+      SCOPED_TRACE(end + " then " + other);
+      const PlatformError error = expect_error("once.toml", text);
+      EXPECT_EQ(error.key(), "a");
+      EXPECT_NE(std::string(error.what()).find("already wired"), std::string::npos) << error.what();
+    }
+  }
+}
+
 TEST(Platform, LinkSpeedOutsideTheT805SettingsIsAnError) {
   std::string text = base_platform() + "speed_mbps = 15\n";
   const PlatformError error = expect_error("speed.toml", text);
@@ -218,6 +262,84 @@ TEST(Platform, TomlSyntaxErrorNamesFileAndLine) {
 
 TEST(Platform, MissingFileIsAnError) {
   EXPECT_THROW(load_platform(kPlatforms / "no-such-platform.toml"), PlatformError);
+}
+
+/// The error `load_platform(path)` raises; it must name `file`.
+PlatformError load_error(const std::filesystem::path& path) {
+  try {
+    load_platform(path);
+  } catch (const PlatformError& error) {
+    return error;
+  }
+  ADD_FAILURE() << "no error for " << path;
+  return PlatformError("", 0, "", "");
+}
+
+void expect_in(const PlatformError& error, const std::string& part) {
+  EXPECT_NE(std::string(error.what()).find(part), std::string::npos) << error.what();
+}
+
+/// Files that are no regular file of a sane size, none of which may hang or exhaust memory.
+std::vector<std::filesystem::path> unreadable_files() {
+  const std::filesystem::path folder = std::filesystem::path(testing::TempDir()) / "unreadable";
+  std::filesystem::create_directories(folder);
+  const auto fifo = folder / "fifo.toml";
+  std::filesystem::remove(fifo);
+  EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto big = folder / "big.toml";
+  {
+    std::ofstream out(big);
+    out << "# padding\n";
+  }
+  std::filesystem::resize_file(big, (std::uintmax_t{16} << 20) + 1);
+  return {folder, fifo, "/dev/zero", big, folder / "absent.toml"};
+}
+
+TEST(Platform, UnreadablePlatformFileIsAnErrorNamingItAndWhy) {
+  const auto files = unreadable_files();
+  const std::vector<std::string> why = {"is a directory", "is a FIFO", "is a device",
+                                        "a platform file is at most 16 MiB", "cannot open"};
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    SCOPED_TRACE(files[i].string());
+    const PlatformError error = load_error(files[i]);
+    EXPECT_EQ(error.file(), files[i].string());
+    expect_in(error, why[i]);
+    expect_in(error, "platform file");
+  }
+}
+
+TEST(Platform, UnreadableProcessorFileIsAProcessorFileErrorAtTheProcessorKey) {
+  const auto files = unreadable_files();
+  const std::vector<std::string> why = {"is a directory", "is a FIFO", "is a device",
+                                        "a processor file is at most 16 MiB", "cannot open"};
+  const std::string original = (kPlatforms / "processors" / "t805.toml").string();
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    SCOPED_TRACE(files[i].string());
+    std::string text = base_platform();
+    text.replace(text.find(original), original.size(), files[i].string());
+    const auto path = write_file("unreadable-processor.toml", text);
+    const PlatformError error = load_error(path);
+    EXPECT_EQ(error.file(), path.string());
+    EXPECT_EQ(error.key(), "processor");
+    EXPECT_EQ(error.line(), line_of(text, "processor = "));
+    expect_in(error, files[i].string());
+    expect_in(error, why[i]);
+    expect_in(error, "processor file");
+  }
+}
+
+TEST(Platform, ProcessorFileErrorsSayProcessorFile) {
+  std::ifstream in(kPlatforms / "processors" / "t805.toml");
+  std::string processor((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  processor.replace(processor.find("[speed_grades]"), 14, "[speed_grades");
+  const auto processor_path = write_file("syntax-processor.toml", processor);
+  std::string text = base_platform();
+  const std::string original = (kPlatforms / "processors" / "t805.toml").string();
+  text.replace(text.find(original), original.size(), processor_path.string());
+  const PlatformError error = load_error(write_file("uses-syntax-processor.toml", text));
+  EXPECT_EQ(error.file(), processor_path.string());
+  EXPECT_EQ(error.line(), line_of(processor, "[speed_grades"));
+  expect_in(error, "TOML syntax error");
 }
 
 TEST(Platform, UnknownInstructionInTheCostTableIsAnError) {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <memory_resource>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -31,6 +32,13 @@ struct MemoryConfig {
   std::size_t reserved_on_chip_bytes = 0x70;
 };
 
+/// The host could not provide the bytes behind a node's memory (address space exhausted, as
+/// under a `ulimit -v`); the message says how many bytes were asked for.
+class HostMemoryError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Where a block may be placed.
 enum class Placement : std::uint8_t {
   on_chip,              ///< only on-chip RAM (1-cycle access)
@@ -41,7 +49,8 @@ enum class Placement : std::uint8_t {
 /// What a block is for; workspaces are the processes' stacks in occam terms.
 enum class BlockKind : std::uint8_t { data, workspace };
 
-/// A node's memory: real bytes for on-chip RAM and for the external arena, handed out by a
+/// A node's memory: real bytes for on-chip RAM and for the external arena (mapped zeroed, backed
+/// by host memory only where touched, so that its size costs nothing up front), handed out by a
 /// deterministic first-fit allocator with coalescing, so that addresses depend only on the
 /// sequence of requests. Every block is charged to an owner (a process name); running out
 /// raises MemoryFault naming the owner and the request. Usable as a std::pmr::memory_resource
@@ -55,6 +64,8 @@ public:
   /// Allocation granularity: the T805 word.
   static constexpr std::size_t kWordBytes = 4;
 
+  /// std::invalid_argument for a config beyond the T805 address map, HostMemoryError when the
+  /// host cannot map the bytes.
   explicit MemoryArena(const MemoryConfig& config);
   ~MemoryArena() override;
   MemoryArena(const MemoryArena&) = delete;
@@ -147,7 +158,12 @@ private:
                           std::string_view owner) const;
 
   MemoryConfig config_;
-  std::unique_ptr<std::byte, void (*)(std::byte*)> bytes_;
+  struct HostBytesDeleter {
+    std::size_t size;
+    void operator()(std::byte* bytes) const;
+  };
+
+  std::unique_ptr<std::byte, HostBytesDeleter> bytes_;
   FreeList on_chip_free_;
   FreeList external_free_;
   std::map<std::size_t, Block> blocks_;
