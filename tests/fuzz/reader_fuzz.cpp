@@ -18,6 +18,12 @@ using namespace marsokhod::fuzz;
 const ReaderTarget* g_target = nullptr;
 fs::path g_input;
 
+// The work folder goes at a normal exit; after a finding's abort it stays for inspection.
+void remove_work_folder() {
+  std::error_code ignored;
+  fs::remove_all(g_input.parent_path().parent_path(), ignored);
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
@@ -40,6 +46,7 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   const fs::path root = fs::temp_directory_path() /
                         ("marsokhod-reader-fuzz-" + std::to_string(static_cast<long>(getpid())));
   g_input = prepare_input(*g_target, root);
+  std::atexit(remove_work_folder);
   return 0;
 }
 

@@ -54,6 +54,7 @@ TEST_P(ReaderMutation, AcceptsOrRejectsEveryMutantNamingTheFile) {
   const fs::path work = fs::path(MARSOKHOD_FUZZ_OUTPUT) / "reader_work";
   const fs::path findings = fs::path(MARSOKHOD_FUZZ_OUTPUT) / "findings";
   const fs::path input = prepare_input(target, work);
+  fs::remove_all(findings / std::string(target.name)); // only this run's findings stay
   const std::vector<Seed> seeds = target.seeds();
   ASSERT_FALSE(seeds.empty());
 

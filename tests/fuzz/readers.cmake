@@ -51,5 +51,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t*, std::size_t) { return
     target_link_libraries(reader_fuzz PRIVATE marsokhod_reader_registry)
     target_compile_options(reader_fuzz PRIVATE -fsanitize=fuzzer)
     target_link_options(reader_fuzz PRIVATE -fsanitize=fuzzer)
+    # A short seeded run of every reader from its seeds; new inputs stay in the build folder.
+    add_test(NAME fuzz.reader_smoke
+             COMMAND sh -c [[
+status=0
+for reader in $("$0" list | cut -d' ' -f1); do
+  mkdir -p "$2/seeds/$reader" "$2/corpus/$reader"
+  "$0" seeds "$reader" "$2/seeds/$reader"
+  "$1" -reader="$reader" -seed=1 -runs=3000 -dict="$3" -artifact_prefix="$2/$reader-" \
+    "$2/corpus/$reader" "$2/seeds/$reader" || status=1
+done
+exit $status]]
+                     $<TARGET_FILE:reader_corpus> $<TARGET_FILE:reader_fuzz>
+                     "${CMAKE_CURRENT_BINARY_DIR}/reader_fuzz_runs" "${reader_fuzz_dir}/readers.dict")
+    set_tests_properties(fuzz.reader_smoke PROPERTIES LABELS fuzz TIMEOUT 300)
   endif()
 endif()
