@@ -39,7 +39,6 @@ done
 rm -rf "$out"
 mkdir -p "$out/base" "$out/runs"
 out=$(cd "$out" && pwd)
-: >"$out/bad.txt"
 # A valid 128 x 128 pair and its scene.json: the files a mutated file is used beside.
 if ! "$binary" world --out "$out/base" --size 128 --seed 1 >"$out/base/world.log" 2>&1; then
   echo "hostile-cli: marsokhod world failed (see $out/base/world.log)" >&2
@@ -47,19 +46,20 @@ if ! "$binary" world --out "$out/base" --size 128 --seed 1 >"$out/base/world.log
 fi
 left="$out/base/left.pgm"
 right="$out/base/right.pgm"
-run_number=0
+number=0
 # Pieces of library messages that must not reach a user (as in tests/fuzz/reader_verdict.cpp).
 internal='\[json\.exception|basic_string|basic_filebuf|vector::|map::at|std::|filesystem error|iostream error|bad_optional|bad_variant'
 
-# run READER FILE NAMED: the reader's command on FILE; the message must contain NAMED.
+# run N READER FILE NAMED: the reader's command on FILE in run folder N; the message must
+# contain NAMED. The outcome goes to runs/N/result ("reader status") and runs/N/bad, so that
+# runs can go in parallel; the tally reads them at the end.
 run() {
-  reader="$1" file="$2" named="$3"
-  run_number=$((run_number + 1))
-  dir="$out/runs/$run_number"
+  number="$1" reader="$2" file="$3" named="$4"
+  dir="$out/runs/$number"
   mkdir -p "$dir"
   case "$reader" in
   platform | processor) set -- commstime --platform "$file" --loops 10 ;;
-  rig) if [ $((run_number % 2)) -eq 0 ]; then set -- rig --rig "$file"; else set -- nav "$left" "$right" --rig "$file" --out "$dir"; fi ;;
+  rig) if [ $((number % 2)) -eq 0 ]; then set -- rig --rig "$file"; else set -- nav "$left" "$right" --rig "$file" --out "$dir"; fi ;;
   scene) set -- nav "$left" "$right" --scene "$file" --out "$dir" ;;
   calibration) set -- nav "$left" "$right" --calibration "$file" --out "$dir" ;;
   pairs) set -- eval stereo "$file" --out "$dir" ;;
@@ -82,23 +82,17 @@ run() {
   elif [ "$status" -ne 0 ] && grep -qE "$internal" "$dir/stderr"; then
     bad="internal message"
   fi
-  case "$status" in
-  0 | 1 | 2) counter="e${status}_$reader" ;;
-  *) counter="eo_$reader" ;;
-  esac
-  eval "n_$reader=\$((n_$reader + 1)) $counter=\$(($counter + 1))"
+  echo "$reader $status" >"$dir/result"
   if [ -n "$bad" ]; then
-    eval "bad_$reader=\$((bad_$reader + 1))"
     {
       echo "[$reader] $bad: marsokhod $*"
       echo "    $(head -c 300 "$dir/stderr" | head -n 1)"
-    } >>"$out/bad.txt"
+    } >"$dir/bad"
   fi
 }
 
 readers=$("$tool" list | cut -d' ' -f1)
 for reader in $readers; do
-  eval "n_$reader=0 e0_$reader=0 e1_$reader=0 e2_$reader=0 eo_$reader=0 bad_$reader=0"
   name=$("$tool" list | awk -v r="$reader" '$1 == r { print $2 }')
   "$tool" mutate "$reader" "$count" "$seed" "$out/mutants/$reader" || exit 2
   i=0
@@ -107,7 +101,8 @@ for reader in $readers; do
     file="$folder/$name"
     # A mutated processor file is reached through the platform file beside it.
     [ "$reader" = processor ] && file="$folder/platform.toml"
-    run "$reader" "$file" "$folder/"
+    number=$((number + 1))
+    run "$number" "$reader" "$file" "$folder/"
     i=$((i + 1))
   done
 done
@@ -119,41 +114,58 @@ mkfifo "$hostile/fifo"
 truncate -s 3G "$hostile/sparse"
 printf 'x = 1\n' >"$hostile/unreadable"
 chmod 000 "$hostile/unreadable"
-if [ "$(id -u)" -eq 0 ]; then
-  echo "hostile-cli: skipping the unreadable-file case of every reader: running as root, permissions do not bite"
-fi
-for reader in $readers; do
-  for case_path in "$hostile/fifo" /dev/zero "$hostile/folder" "$hostile/sparse" "$hostile/unreadable"; do
-    if [ "$case_path" = "$hostile/unreadable" ] && [ "$(id -u)" -eq 0 ]; then
-      continue
-    fi
+# fixed CASE PARALLEL FIRST: that case for every reader in run folders FIRST, FIRST+1, ..., at
+# most PARALLEL at a time: FIFO, /dev/zero and folder runs may wait for their timeout, so they
+# all go together; a run reading the 3 GB file takes 3 GB of memory, so three at a time.
+fixed() {
+  case_path="$1" parallel="$2" number="$3" running=0
+  for reader in $readers; do
     file="$case_path"
     if [ "$reader" = processor ]; then
-      platform="$hostile/platform-$(basename "$case_path").toml"
-      sed "s|^processor = .*|processor = \"$case_path\"|" "$out/mutants/processor/0/processor/platform.toml" >"$platform"
-      file="$platform"
+      file="$hostile/platform-$number.toml"
+      sed "s|^processor = .*|processor = \"$case_path\"|" "$out/mutants/processor/0/processor/platform.toml" >"$file"
     fi
-    run "$reader" "$file" "$case_path"
+    run "$number" "$reader" "$file" "$case_path" &
+    number=$((number + 1)) running=$((running + 1))
+    if [ "$running" -ge "$parallel" ]; then
+      wait
+      running=0
+    fi
   done
-done
+  wait
+}
+fixed "$hostile/fifo" 100 100000 &
+fixed /dev/zero 100 200000 &
+fixed "$hostile/folder" 100 300000 &
+wait
+fixed "$hostile/sparse" 3 400000
+if [ "$(id -u)" -eq 0 ]; then
+  echo "hostile-cli: skipped the unreadable-file case of every reader: running as root, permissions do not bite"
+else
+  fixed "$hostile/unreadable" 100 500000
+fi
 chmod 600 "$hostile/unreadable"
 rm -f "$hostile/sparse"
 
+cat "$out"/runs/*/bad >"$out/bad.txt" 2>/dev/null
 total_bad=0
-printf '%-12s %6s %6s %6s %6s %6s %6s\n' reader runs exit0 exit1 exit2 other bad
+printf '%-12s %6s %6s %6s %6s %6s %6s\n' reader runs exit0 exit1 exit2 other bad >"$out/table.txt"
 {
   printf '{\n  "count": %s,\n  "seed": %s,\n  "readers": {' "$count" "$seed"
   separator=""
   for reader in $readers; do
-    eval "n=\$n_$reader e0=\$e0_$reader e1=\$e1_$reader e2=\$e2_$reader eo=\$eo_$reader b=\$bad_$reader"
-    printf '%-12s %6s %6s %6s %6s %6s %6s\n' "$reader" "$n" "$e0" "$e1" "$e2" "$eo" "$b" >&2
+    counts=$(cat "$out"/runs/*/result | awk -v r="$reader" '$1 == r { n++; if ($2 <= 2) e[$2]++; else o++ }
+      END { printf "%d %d %d %d %d", n, e[0], e[1], e[2], o }')
+    b=$(grep -c "^\[$reader\]" "$out/bad.txt")
+    set -- $counts
+    printf '%-12s %6s %6s %6s %6s %6s %6s\n' "$reader" "$1" "$2" "$3" "$4" "$5" "$b" >>"$out/table.txt"
     printf '%s\n    "%s": {"runs": %s, "exit0": %s, "exit1": %s, "exit2": %s, "other": %s, "bad": %s}' \
-      "$separator" "$reader" "$n" "$e0" "$e1" "$e2" "$eo" "$b"
+      "$separator" "$reader" "$1" "$2" "$3" "$4" "$5" "$b"
     separator=","
     total_bad=$((total_bad + b))
   done
   printf '\n  },\n  "bad": %s\n}\n' "$total_bad"
-} >"$out/summary.json" 2>"$out/table.txt"
+} >"$out/summary.json"
 cat "$out/table.txt"
 echo "summary: $out/summary.json; bad runs: $out/bad.txt"
 if [ "$(wc -l <"$out/bad.txt")" -gt 0 ]; then
