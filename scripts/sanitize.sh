@@ -4,7 +4,9 @@
 # runs them: the emulator, the occam layer, and the image readers and codecs (imaging/image). The
 # image-processing, world and command tests are left out: under the sanitizers they would take
 # most of CI's 20-minute budget (building them means building every layer) and exercise no
-# fiber switch. `sh scripts/sanitize.sh all` builds and runs the whole suite instead.
+# fiber switch. The reader mutation test (docs/testing.md) runs too: it needs every reader's
+# layer, but it is where hostile file input is checked. `sh scripts/sanitize.sh all` builds and
+# runs the whole suite instead.
 set -eu
 
 scope="${1:-layers}"
@@ -20,7 +22,7 @@ fi
 
 # Test executables are named <folder>_<file stem> (tests/CMakeLists.txt).
 targets=$(ninja -C "$build" -t targets all | sed -n 's/^\([a-z_0-9]*_test\): .*/\1/p' |
-  grep -E '^(emulator_|occam_port_|imaging_(image|image_io|image_mutation|png_codec|pnm_codec|pfm_codec)_test$)' |
+  grep -E '^(emulator_|occam_port_|imaging_(image|image_io|image_mutation|png_codec|pnm_codec|pfm_codec)_test$|fuzz_reader_mutation_test$)' |
   sort -u)
 if [ -z "$targets" ]; then
   echo "sanitize: no test targets found in $build" >&2
@@ -33,3 +35,5 @@ ctest --preset sanitize --no-tests=error -L '^(emulator|occam_port)$'
 # gtest suites of the image readers and codecs.
 ctest --preset sanitize --no-tests=error -L '^imaging$' \
   -R '^(Image(View|Mutation|Read|RoundTrip|Write)?|Read(Gray8|Pfm)|Png[A-Za-z]*|Pnm[A-Za-z]*|Pfm[A-Za-z]*)\.'
+# Every file reader on seeded mutations of its valid files (tests/fuzz/reader_mutation_test.cpp).
+ctest --preset sanitize --no-tests=error -L '^fuzz$' -R '^Registry/ReaderMutation\.'
