@@ -38,6 +38,16 @@ bool nesting_within(const std::string& text, int limit) {
   return true;
 }
 
+// nlohmann's messages open with "[json.exception.parse_error.101] ", a library detail the user
+// has no use for; what follows says where and why.
+std::string without_exception_tag(const nlohmann::json::exception& error) {
+  const std::string_view message = error.what();
+  const std::size_t end = message.find("] ");
+  if (message.starts_with("[json.exception.") && end != std::string_view::npos)
+    return std::string(message.substr(end + 2));
+  return std::string(message);
+}
+
 } // namespace
 
 nlohmann::json parse_json_file(const std::filesystem::path& path, std::string_view kind) {
@@ -49,7 +59,7 @@ nlohmann::json parse_json_file(const std::filesystem::path& path, std::string_vi
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& error) { // parse_error, and out_of_range for 1e999
-    throw InputError(path.string(), fmt::format("not a {}: {}", kind, error.what()));
+    throw InputError(path.string(), fmt::format("not a {}: {}", kind, without_exception_tag(error)));
   }
 }
 

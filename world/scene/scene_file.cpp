@@ -44,10 +44,6 @@ public:
       document = io::parse_json_file(path_, "scene file");
     } catch (const io::InputError& error) {
       throw SceneFileError(error.what());
-    } catch (const nlohmann::json::exception& error) {
-      // The parser refuses a number beyond the double range (1e999) with out_of_range, which
-      // the JSON file reader does not restate.
-      fail(fmt::format("not a scene file: {}", error.what()));
     }
     require_object(document, "the document");
     const std::string placement_name(scene_keys::kPlacement);

@@ -60,7 +60,9 @@ TEST(JsonFile, ParsesAValidFile) {
 TEST(JsonFile, SyntaxErrorNamesTheFile) {
   const fs::path path = write_temp("bad.json", "{\"a\": }");
   const std::string message = error_of([&] { parse_json_file(path, "test file"); });
-  EXPECT_EQ(message.rfind(path.string() + ": not a test file", 0), 0U) << message;
+  EXPECT_EQ(message.rfind(path.string() + ": not a test file: parse error at line 1", 0), 0U)
+      << message;
+  EXPECT_EQ(message.find("json.exception"), std::string::npos) << message;
   fs::remove(path);
 }
 
