@@ -62,8 +62,8 @@ void write_file_atomically(const fs::path& path, std::span<const std::uint8_t> b
     fail(path, "is a directory");
 
   fs::path temporary;
-  const int fd = create_temporary(path.parent_path().empty() ? fs::path(".") / path : path,
-                                  temporary);
+  const int fd =
+      create_temporary(path.parent_path().empty() ? fs::path(".") / path : path, temporary);
   if (fd < 0)
     fail(path, fmt::format("cannot create a file in {}: {}", folder.string(), errno_text(errno)));
   const bool written = write_fully(fd, bytes);
@@ -82,8 +82,8 @@ void write_file_atomically(const fs::path& path, std::span<const std::uint8_t> b
 }
 
 void write_file_atomically(const fs::path& path, std::string_view text) {
-  write_file_atomically(
-      path, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+  write_file_atomically(path,
+                        std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
 }
 
 } // namespace marsokhod::io

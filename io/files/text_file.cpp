@@ -69,12 +69,12 @@ std::string read_text_file(const std::filesystem::path& path, std::string_view k
   if (::fstat(fd.get(), &status) != 0)
     fail(path, fmt::format("cannot read the {}: {}", kind, errno_text(errno)));
   if (!S_ISREG(status.st_mode))
-    fail(path, fmt::format("is {}; a {} must be a regular file", file_type_name(status.st_mode),
-                           kind));
+    fail(path,
+         fmt::format("is {}; a {} must be a regular file", file_type_name(status.st_mode), kind));
   const auto size = static_cast<std::uintmax_t>(status.st_size);
   if (size > max_bytes)
-    fail(path, fmt::format("is {} bytes; a {} is at most {}", size, kind,
-                           byte_count_text(max_bytes)));
+    fail(path,
+         fmt::format("is {} bytes; a {} is at most {}", size, kind, byte_count_text(max_bytes)));
 
   std::string text(static_cast<std::size_t>(size), '\0');
   std::size_t done = 0;

@@ -59,7 +59,8 @@ nlohmann::json parse_json_file(const std::filesystem::path& path, std::string_vi
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& error) { // parse_error, and out_of_range for 1e999
-    throw InputError(path.string(), fmt::format("not a {}: {}", kind, without_exception_tag(error)));
+    throw InputError(path.string(),
+                     fmt::format("not a {}: {}", kind, without_exception_tag(error)));
   }
 }
 

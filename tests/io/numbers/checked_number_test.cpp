@@ -27,8 +27,8 @@ TEST(ParseFinite, RefusesJunkAroundTheNumber) {
 
 TEST(ParseInteger, RefusesValuesThatWouldWrap) {
   EXPECT_FALSE(parse_integer<std::uint64_t>("-1").has_value());
-  EXPECT_FALSE(parse_integer<std::int32_t>("4294967297").has_value());   // 2^32 + 1
-  EXPECT_FALSE(parse_integer<std::int32_t>("2147483648").has_value());   // 2^31
+  EXPECT_FALSE(parse_integer<std::int32_t>("4294967297").has_value()); // 2^32 + 1
+  EXPECT_FALSE(parse_integer<std::int32_t>("2147483648").has_value()); // 2^31
   EXPECT_FALSE(parse_integer<std::int64_t>("9223372036854775808").has_value());
   EXPECT_EQ(parse_integer<std::int32_t>("-2147483648"), std::numeric_limits<std::int32_t>::min());
   EXPECT_EQ(parse_integer<std::uint64_t>("18446744073709551615"),

@@ -43,7 +43,8 @@ template <std::integral To>
 std::optional<To> integer_from_real(double value) {
   // Both bounds are exact powers of two as doubles, so the comparison itself cannot round in.
   constexpr double kLow = static_cast<double>(std::numeric_limits<To>::min());
-  constexpr double kHighExclusive = 2.0 * (static_cast<double>(std::numeric_limits<To>::max() / 2) + 1.0);
+  constexpr double kHighExclusive =
+      2.0 * (static_cast<double>(std::numeric_limits<To>::max() / 2) + 1.0);
   if (!(value >= kLow && value < kHighExclusive))
     return std::nullopt;
   const To whole = static_cast<To>(value);
