@@ -103,8 +103,12 @@ void print_text(const imaging::StereoRig& rig) {
              p.pitch_down_deg);
   fmt::print("  focal length            {:.3f} px\n", rig.focal_px());
   fmt::print("  vertical field of view  {:.2f} deg\n", rig.vertical_fov_deg());
-  fmt::print("  ground visible from     {:.3f} m ahead of the rover centre\n",
-             rig.ground_visible_from_m());
+  // A rig pitched up sees no ground at all (JSON: null); say so rather than print "inf".
+  const double ground_from = rig.ground_visible_from_m();
+  if (std::isfinite(ground_from))
+    fmt::print("  ground visible from     {:.3f} m ahead of the rover centre\n", ground_from);
+  else
+    fmt::print("  ground visible from     nowhere: every row looks above the horizon\n");
   fmt::print("  horizon row             {:.2f}\n\n", imaging::horizon_row(rig));
   fmt::print("   row  ground (m)  disparity (px)\n");
   for (int v : table_rows(rig))

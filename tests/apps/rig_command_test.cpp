@@ -94,6 +94,17 @@ TEST(RigCommand, TextReportShowsTheKeyFigures) {
   EXPECT_NE(result.out.find("2.027 m"), std::string::npos) << result.out;
 }
 
+// Pitched 20 deg up with a 32.5 deg field of view, the lowest row looks 3.7 deg above the
+// horizontal: no row meets the ground, which the report says in words (JSON: null).
+TEST(RigCommand, RigThatSeesNoGroundSaysSoInsteadOfPrintingInfinity) {
+  const fs::path path = write_file("up.toml", "[rig]\npitch_down_deg = -20\n");
+  const auto result = run_marsokhod("rig --rig '" + path.string() + "'");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("ground visible from     nowhere"), std::string::npos) << result.out;
+  EXPECT_EQ(result.out.find("inf"), std::string::npos) << result.out;
+  EXPECT_TRUE(rig_json("--rig '" + path.string() + "'")["ground_visible_from_m"].is_null());
+}
+
 TEST(RigCommand, BadRigFileExitsOneNamingFileAndKey) {
   const fs::path path = write_file("bad.toml", "[rig]\nbaseline_m = -0.5\n");
   const auto result = run_marsokhod("rig --rig '" + path.string() + "'");
