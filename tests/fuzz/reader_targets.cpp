@@ -185,20 +185,21 @@ void read_calibration(const fs::path& input) {
 std::vector<Seed> pairs_seeds() {
   const std::string header =
       "name\tleft\tright\tgt\tgt_scale(disp=value/scale)\tgt_bits\twidth\theight\tmax_gt_disp_px\n";
-  return {{"two pairs", header + "first\tleft.pgm\tright.pgm\tgt.pgm\t4\t8\t8\t6\t16\n"
-                                 "second\tleft.pgm\tright.pgm\t-\t-\t-\t8\t6\t-\n"},
-          {"16-bit truth", header + "deep\tleft.pgm\tright.pgm\tgt16.pgm\t256\t16\t8\t6\t12.5\n"}};
+  return {{"two pairs", header + "first\tleft.pgm\tright.pgm\tgt.pgm\t4\t8\t128\t64\t16\n"
+                                 "second\tleft.pgm\tright.pgm\t-\t-\t-\t128\t64\t-\n"},
+          {"16-bit truth", header + "deep\tleft.pgm\tright.pgm\tgt16.pgm\t256\t16\t128\t64\t12.5\n"}};
 }
 
-// Tiny images the index points to.
+// Small textured images the index points to, large enough for `eval stereo` to match them, so
+// that the command-line run of a mutant that stays valid gets as far as scoring.
 void prepare_pairs(const fs::path& folder) {
-  imaging::Image<std::uint8_t> grey(8, 6, 1);
+  imaging::Image<std::uint8_t> grey(128, 64, 1);
   for (std::size_t i = 0; i < grey.size(); ++i)
-    grey.data()[i] = static_cast<std::uint8_t>(i * 5);
+    grey.data()[i] = static_cast<std::uint8_t>((i * 2654435761U) >> 24);
   imaging::write_image(folder / "left.pgm", grey.view());
   imaging::write_image(folder / "right.pgm", grey.view());
   imaging::write_image(folder / "gt.pgm", grey.view());
-  imaging::write_image(folder / "gt16.pgm", imaging::Image<std::uint16_t>(8, 6, 1, 512).view());
+  imaging::write_image(folder / "gt16.pgm", imaging::Image<std::uint16_t>(128, 64, 1, 512).view());
 }
 
 void read_pairs(const fs::path& input) {
