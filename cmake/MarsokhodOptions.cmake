@@ -10,6 +10,9 @@ if(MARSOKHOD_SANITIZE)
   # warns that -fsanitize can cause spurious warnings; with g++ 12 it fires inside
   # <regex>'s std::function), so under the sanitizers it is off: they check the real thing.
   target_compile_options(marsokhod_options INTERFACE -fsanitize=${MARSOKHOD_SANITIZE} -fno-omit-frame-pointer
-                                                     -fno-sanitize-recover=all -Wno-maybe-uninitialized)
+                                                     -fno-sanitize-recover=all)
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    target_compile_options(marsokhod_options INTERFACE -Wno-maybe-uninitialized)
+  endif()
   target_link_options(marsokhod_options INTERFACE -fsanitize=${MARSOKHOD_SANITIZE})
 endif()
