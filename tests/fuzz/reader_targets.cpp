@@ -185,9 +185,10 @@ void read_calibration(const fs::path& input) {
 std::vector<Seed> pairs_seeds() {
   const std::string header =
       "name\tleft\tright\tgt\tgt_scale(disp=value/scale)\tgt_bits\twidth\theight\tmax_gt_disp_px\n";
-  return {{"two pairs", header + "first\tleft.pgm\tright.pgm\tgt.pgm\t4\t8\t128\t64\t16\n"
-                                 "second\tleft.pgm\tright.pgm\t-\t-\t-\t128\t64\t-\n"},
-          {"16-bit truth", header + "deep\tleft.pgm\tright.pgm\tgt16.pgm\t256\t16\t128\t64\t12.5\n"}};
+  return {
+      {"two pairs", header + "first\tleft.pgm\tright.pgm\tgt.pgm\t4\t8\t128\t64\t16\n"
+                             "second\tleft.pgm\tright.pgm\t-\t-\t-\t128\t64\t-\n"},
+      {"16-bit truth", header + "deep\tleft.pgm\tright.pgm\tgt16.pgm\t256\t16\t128\t64\t12.5\n"}};
 }
 
 // Small textured images the index points to, large enough for `eval stereo` to match them, so
