@@ -157,8 +157,9 @@ std::vector<Seed> scene_seeds() {
 void read_scene(const fs::path& input) {
   const imaging::Attitude attitude = world::read_scene_attitude(input);
   expect(finite(attitude.pitch_deg) && finite(attitude.roll_deg), "attitude not finite");
-  expect(std::abs(attitude.pitch_deg) <= 90 && std::abs(attitude.roll_deg) <= 90,
-         "attitude beyond +-90 deg");
+  // docs/formats.md, Scenes: the attitude nav --pitch and --roll accept, -45..45 deg.
+  expect(std::abs(attitude.pitch_deg) <= 45 && std::abs(attitude.roll_deg) <= 45,
+         "attitude beyond +-45 deg");
 }
 
 // ---- calibration files ----
