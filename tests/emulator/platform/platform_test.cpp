@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 #include <sys/stat.h>
+#include <unistd.h>
 #include <vector>
 
 namespace marsokhod::emulator {
@@ -281,7 +282,12 @@ void expect_in(const PlatformError& error, const std::string& part) {
 
 /// Files that are no regular file of a sane size, none of which may hang or exhaust memory.
 std::vector<std::filesystem::path> unreadable_files() {
-  const std::filesystem::path folder = std::filesystem::path(testing::TempDir()) / "unreadable";
+  // One folder per test and process: CTest runs the tests that share this helper in parallel,
+  // and one must not truncate the other's big file while it is being read.
+  const std::filesystem::path folder =
+      std::filesystem::path(testing::TempDir()) /
+      ("unreadable-" + std::to_string(::getpid()) + "-" +
+       ::testing::UnitTest::GetInstance()->current_test_info()->name());
   std::filesystem::create_directories(folder);
   const auto fifo = folder / "fifo.toml";
   std::filesystem::remove(fifo);
