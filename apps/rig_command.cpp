@@ -119,6 +119,11 @@ void print_text(const imaging::StereoRig& rig) {
       imaging::obstacle_parallax(rig, kStoneDistanceM, kStoneHeightM);
   fmt::print("\n{:.0f} cm stone {:.0f} m ahead (paper section 2: \"3 pixels\"):\n",
              stone.height_m * 100.0, stone.distance_m);
+  // The figures hold for the geometry either way; a rig that cannot see the stone must say so.
+  const auto in_image = [&](double row) { return row >= 0.0 && row <= rig.height() - 1.0; };
+  if (!in_image(stone.top_row) || !in_image(stone.bottom_row))
+    fmt::print("  outside the image: top in row {:.1f}, foot in row {:.1f} of 0..{}\n",
+               stone.top_row, stone.bottom_row, rig.height() - 1);
   fmt::print("  top {:.3f} px, foot {:.3f} px: top - foot = {:.3f} px\n", stone.top_disparity_px,
              stone.bottom_disparity_px, stone.top_minus_bottom_px);
   fmt::print("  ground in the top's row {:.2f} m ahead, {:.3f} px: top - ground = {:.3f} px\n",

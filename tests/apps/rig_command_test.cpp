@@ -103,6 +103,15 @@ TEST(RigCommand, RigThatSeesNoGroundSaysSoInsteadOfPrintingInfinity) {
   EXPECT_NE(result.out.find("ground visible from     nowhere"), std::string::npos) << result.out;
   EXPECT_EQ(result.out.find("inf"), std::string::npos) << result.out;
   EXPECT_TRUE(rig_json("--rig '" + path.string() + "'")["ground_visible_from_m"].is_null());
+  // The stone's top is atan(0.7 / 14) = 2.9 deg below the horizontal, 22.9 deg below an axis
+  // 20 deg up: beyond the 16.3 deg half field of view, below the bottom row.
+  EXPECT_NE(result.out.find("outside the image: top in row"), std::string::npos) << result.out;
+}
+
+TEST(RigCommand, ThePapersRigSeesTheStoneInsideTheImage) {
+  const auto result = run_marsokhod("rig");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.out.find("outside the image"), std::string::npos) << result.out;
 }
 
 TEST(RigCommand, BadRigFileExitsOneNamingFileAndKey) {
