@@ -4,6 +4,7 @@
 // Internal interface between the image dispatcher (image_io.cpp) and the per-format codecs.
 
 #include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/io/files/input_file.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -52,13 +53,10 @@ inline constexpr std::size_t kImageHeaderWindow = std::size_t{64} << 10;
 class ImageFileReader {
 public:
   explicit ImageFileReader(const std::filesystem::path& path);
-  ImageFileReader(const ImageFileReader&) = delete;
-  ImageFileReader& operator=(const ImageFileReader&) = delete;
-  ~ImageFileReader();
 
   const std::string& name() const { return name_; }
   /// The file's size when it was opened.
-  std::uint64_t size() const { return size_; }
+  std::uint64_t size() const { return file_.size(); }
   /// Appends the next bytes of the file to `bytes` until it holds `count` bytes or the file
   /// ends; `bytes` must hold exactly what was read so far.
   void read_up_to(std::vector<std::uint8_t>& bytes, std::size_t count);
@@ -67,8 +65,7 @@ public:
 
 private:
   std::string name_;
-  int fd_ = -1;
-  std::uint64_t size_ = 0;
+  io::InputFile file_;
   std::uint64_t position_ = 0;
 };
 

@@ -9,19 +9,12 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <system_error>
-#include <unistd.h>
 
 namespace marsokhod::imaging::detail {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string errno_text(int error) {
-  return std::generic_category().message(error);
-}
 
 } // namespace
 
@@ -36,53 +29,27 @@ void check_image_size(std::string_view name, long long width, long long height) 
     fail(name, fmt::format("height {} is out of range 1..{}", height, kMaxImageSide));
 }
 
-ImageFileReader::ImageFileReader(const fs::path& path) : name_(path.string()) {
-  // O_NONBLOCK: opening a FIFO without a writer must not wait; the type check refuses it.
-  fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd_ < 0) {
-    const int error = errno;
-    if (error == ENOENT)
-      fail(name_, "no such file");
-    fail(name_, fmt::format("cannot open: {}", errno_text(error)));
-  }
-  struct stat status {};
-  if (::fstat(fd_, &status) != 0) {
-    const int error = errno;
-    ::close(fd_);
-    fail(name_, fmt::format("cannot read: {}", errno_text(error)));
-  }
-  const char* problem = nullptr;
-  if (S_ISDIR(status.st_mode))
-    problem = "is a directory, not an image file";
-  else if (!S_ISREG(status.st_mode))
-    problem = "not a regular file";
-  else if (status.st_size == 0)
-    problem = "empty file";
-  if (problem != nullptr) {
-    ::close(fd_);
-    fail(name_, problem);
-  }
-  size_ = static_cast<std::uint64_t>(status.st_size);
-}
-
-ImageFileReader::~ImageFileReader() {
-  ::close(fd_);
+ImageFileReader::ImageFileReader(const fs::path& path) : name_(path.string()), file_(path) {
+  if (file_.error() == ENOENT)
+    fail(name_, "no such file");
+  if (file_.error() != 0)
+    fail(name_, fmt::format("cannot open: {}", io::error_text(file_.error())));
+  if (file_.is_directory())
+    fail(name_, "is a directory, not an image file");
+  if (!file_.is_regular())
+    fail(name_, "not a regular file");
+  if (file_.size() == 0)
+    fail(name_, "empty file");
 }
 
 std::size_t ImageFileReader::read_next(std::uint8_t* out, std::size_t length) {
-  std::size_t done = 0;
-  while (done < length) {
-    const ssize_t got = ::read(fd_, out + done, length - done);
-    if (got < 0 && errno == EINTR)
-      continue;
-    if (got < 0)
-      fail(name_, fmt::format("cannot read: {}", errno_text(errno)));
-    if (got == 0)
-      break;
-    done += static_cast<std::size_t>(got);
+  try {
+    const std::size_t done = file_.read(out, length);
+    position_ += done;
+    return done;
+  } catch (const std::system_error& error) {
+    fail(name_, fmt::format("cannot read: {}", error.code().message()));
   }
-  position_ += done;
-  return done;
 }
 
 void ImageFileReader::read_up_to(std::vector<std::uint8_t>& bytes, std::size_t count) {
@@ -90,7 +57,7 @@ void ImageFileReader::read_up_to(std::vector<std::uint8_t>& bytes, std::size_t c
     return;
   // Never more than the file held when it was opened: a header's promise is not an allocation.
   const std::size_t wanted =
-      static_cast<std::size_t>(std::min<std::uint64_t>(count, std::max(size_, position_)));
+      static_cast<std::size_t>(std::min<std::uint64_t>(count, std::max(file_.size(), position_)));
   const std::size_t old_size = bytes.size();
   bytes.resize(wanted);
   bytes.resize(old_size + read_next(bytes.data() + old_size, wanted - old_size));

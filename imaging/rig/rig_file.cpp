@@ -4,6 +4,7 @@
 
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/rig/toml_document.hpp"
+#include "marsokhod/io/formats/toml_file.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -46,7 +47,7 @@ private:
   const toml::table& as_table(const toml::node& node, std::string_view name) const {
     if (!node.is_table())
       fail(node.source(),
-           fmt::format("key '{}' must be a table (got {})", name, type_name(node.type())));
+           fmt::format("key '{}' must be a table (got {})", name, io::toml_type_name(node.type())));
     return *node.as_table();
   }
 
@@ -82,36 +83,12 @@ private:
     if (!number_ok)
       fail(node.source(),
            fmt::format("key '{}' must be {} (got {})", name,
-                       field.integer ? "an integer" : "a number", type_name(node.type())));
+                       field.integer ? "an integer" : "a number", io::toml_type_name(node.type())));
     const double value = node.is_integer() ? static_cast<double>(node.as_integer()->get())
                                            : node.as_floating_point()->get();
     if (auto problem = detail::rig_value_problem(field, value))
       fail(node.source(), fmt::format("key '{}' {}", name, *problem));
     field.set(out, value);
-  }
-
-  static std::string_view type_name(toml::node_type type) {
-    switch (type) {
-    case toml::node_type::table:
-      return "a table";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::floating_point:
-      return "a floating-point number";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::date:
-    case toml::node_type::time:
-    case toml::node_type::date_time:
-      return "a date or time";
-    case toml::node_type::none:
-      break;
-    }
-    return "nothing";
   }
 
   detail::TomlDocument<RigError> document_;

@@ -1,6 +1,7 @@
 // Atomic, checked output files: temporary beside the target, full write, close, rename.
 #include "marsokhod/io/files/file_writer.hpp"
 
+#include "marsokhod/io/files/input_file.hpp"
 #include "marsokhod/io/files/output_error.hpp"
 
 #include <fmt/format.h>
@@ -8,7 +9,6 @@
 #include <atomic>
 #include <cerrno>
 #include <fcntl.h>
-#include <system_error>
 #include <unistd.h>
 
 namespace marsokhod::io {
@@ -18,10 +18,6 @@ namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const fs::path& path, const std::string& problem) {
   throw OutputError(fmt::format("{}: {}", path.string(), problem));
-}
-
-std::string errno_text(int error) {
-  return std::generic_category().message(error);
 }
 
 bool write_fully(int fd, std::span<const std::uint8_t> bytes) {
@@ -65,19 +61,19 @@ void write_file_atomically(const fs::path& path, std::span<const std::uint8_t> b
   const int fd =
       create_temporary(path.parent_path().empty() ? fs::path(".") / path : path, temporary);
   if (fd < 0)
-    fail(path, fmt::format("cannot create a file in {}: {}", folder.string(), errno_text(errno)));
+    fail(path, fmt::format("cannot create a file in {}: {}", folder.string(), error_text(errno)));
   const bool written = write_fully(fd, bytes);
   const int write_errno = errno;
   const bool closed = ::close(fd) == 0;
   if (!written || !closed) {
     const int close_errno = errno;
     ::unlink(temporary.c_str());
-    fail(path, fmt::format("cannot write: {}", errno_text(written ? close_errno : write_errno)));
+    fail(path, fmt::format("cannot write: {}", error_text(written ? close_errno : write_errno)));
   }
   if (::rename(temporary.c_str(), path.c_str()) != 0) {
     const int rename_errno = errno;
     ::unlink(temporary.c_str());
-    fail(path, fmt::format("cannot write: {}", errno_text(rename_errno)));
+    fail(path, fmt::format("cannot write: {}", error_text(rename_errno)));
   }
 }
 

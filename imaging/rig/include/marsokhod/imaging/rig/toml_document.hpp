@@ -34,8 +34,7 @@ public:
   }
 
   [[noreturn]] void fail(const toml::source_region& where, const std::string& problem) const {
-    throw Error(
-        fmt::format("{}:{}:{}: {}", path_.string(), where.begin.line, where.begin.column, problem));
+    throw Error(fmt::format("{}: {}", io::toml_place(path_, where), problem));
   }
   /// A problem of the whole file (a missing table or key has no place of its own).
   [[noreturn]] void fail(const std::string& problem) const {
