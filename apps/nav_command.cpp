@@ -3,6 +3,7 @@
 #include "command.hpp"
 #include "nav_outputs.hpp"
 #include "option_checks.hpp"
+#include "pair_inputs.hpp"
 
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/image/output_folder.hpp"
@@ -44,51 +45,6 @@ struct NavCli {
   bool json = false;
 };
 
-imaging::Image<std::uint8_t> read_grey(const fs::path& path) {
-  try {
-    return imaging::read_gray8(path);
-  } catch (const imaging::ImageError& error) {
-    throw CommandError(error.what());
-  }
-}
-
-imaging::StereoRig rig_for(const NavCli& cli, int width, int height) {
-  if (!cli.rig_file) {
-    imaging::RigParameters parameters;
-    parameters.width_px = width;
-    parameters.height_px = height;
-    try {
-      return imaging::StereoRig(parameters);
-    } catch (const imaging::RigError& error) {
-      throw CommandError(fmt::format("{}: {}x{} images are too small or too large for the rig: {}",
-                                     cli.left.string(), width, height, error.what()));
-    }
-  }
-  try {
-    imaging::StereoRig rig = imaging::StereoRig::load(*cli.rig_file);
-    if (rig.width() != width || rig.height() != height)
-      throw CommandError(fmt::format("{}: the rig is {}x{} but the images are {}x{}",
-                                     cli.rig_file->string(), rig.width(), rig.height(), width,
-                                     height));
-    return rig;
-  } catch (const imaging::RigError& error) {
-    throw CommandError(error.what());
-  }
-}
-
-// The right image with the calibrated vertical parallax removed, or unchanged without one.
-imaging::Image<std::uint8_t> aligned_right(const NavCli& cli, imaging::Image<std::uint8_t> right) {
-  if (!cli.calibration_file)
-    return right;
-  try {
-    const nav::VerticalParallaxMap map = nav::load_vertical_parallax(*cli.calibration_file);
-    nav::check_map_size(map, right.width(), right.height(), cli.calibration_file->string());
-    return nav::remove_vertical_parallax(right, map);
-  } catch (const nav::CalibrationError& error) {
-    throw CommandError(error.what());
-  }
-}
-
 // +inf is the Middlebury "unknown"; anything else that is not a finite disparity >= 0 is an
 // error in the file, not something to guess around.
 imaging::Image<float> read_disparity(const fs::path& path, int width, int height) {
@@ -111,19 +67,6 @@ imaging::Image<float> read_disparity(const fs::path& path, int width, int height
                                        path.string(), x, y, d));
     }
   return disparity;
-}
-
-// The attitude the world placed the rover in, as its scene.json records it. Any other failure
-// of the read (a stream error on a folder, say) is still this file's problem and is named so.
-imaging::Attitude scene_attitude(const fs::path& path) {
-  try {
-    return world::read_scene_attitude(path);
-  } catch (const world::SceneFileError& error) {
-    throw CommandError(error.what());
-  } catch (const std::exception& error) {
-    throw CommandError(
-        fmt::format("{}: cannot read the scene file: {}", path.string(), error.what()));
-  }
 }
 
 void print_summary(const nav::NavigationResult& result, const fs::path& out, double seconds) {
@@ -152,8 +95,8 @@ int run_nav(const NavCli& cli) {
     throw CommandError(fmt::format("{} is {}x{} but {} is {}x{}; a stereo pair has one size",
                                    cli.left.string(), left.width(), left.height(),
                                    cli.right.string(), right.width(), right.height()));
-  const imaging::StereoRig rig = rig_for(cli, left.width(), left.height());
-  right = aligned_right(cli, std::move(right));
+  const imaging::StereoRig rig = rig_for(cli.rig_file, cli.left, left.width(), left.height());
+  right = aligned_right(cli.calibration_file, std::move(right));
   nav::NavigationOptions options;
   options.attitude = cli.scene_file ? scene_attitude(*cli.scene_file)
                                     : imaging::Attitude{cli.pitch_deg, cli.roll_deg};

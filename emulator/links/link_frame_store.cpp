@@ -9,8 +9,9 @@
 
 namespace marsokhod::emulator {
 
-FrameStore::FrameStore(LinkNetwork& network, const DeviceSpec& device, ImageSource source)
-    : device_(device), source_(std::move(source)) {
+FrameStore::FrameStore(LinkNetwork& network, const DeviceSpec& device, ImageSource source,
+                       UploadSink uploads)
+    : device_(device), source_(std::move(source)), uploads_sink_(std::move(uploads)) {
   if (device_.kind != DeviceKind::frame_store)
     throw std::invalid_argument(
         fmt::format("device {} is a {}, not a frame store", device_.name, to_string(device_.kind)));
@@ -18,7 +19,7 @@ FrameStore::FrameStore(LinkNetwork& network, const DeviceSpec& device, ImageSour
     LinkPort* port = network.port(device_.name, link);
     if (port == nullptr)
       continue;
-    servers_.push_back(std::make_unique<Server>(Server{port, std::byte{}, {}}));
+    servers_.push_back(std::make_unique<Server>(Server{port, link, std::byte{}, {}, {}}));
     listen(*servers_.back());
   }
 }
@@ -35,6 +36,10 @@ void FrameStore::listen(Server& server) {
 }
 
 void FrameStore::answer(Server& server) {
+  if (server.request == kUploadRequest) {
+    server.port->start_input(server.length, [this, &server] { receive_upload(server); });
+    return;
+  }
   const int camera = std::to_integer<int>(server.request);
   if (camera >= device_.cameras) {
     listen(server);
@@ -46,6 +51,27 @@ void FrameStore::answer(Server& server) {
                                        device_.name, camera, server.image.size(), image_bytes()));
   ++served_;
   server.port->start_output(server.image, [this, &server] { listen(server); });
+}
+
+void FrameStore::receive_upload(Server& server) {
+  std::size_t bytes = 0;
+  for (std::size_t i = server.length.size(); i-- > 0;)
+    bytes = bytes << 8 | std::to_integer<std::size_t>(server.length[i]);
+  if (bytes > kMaxUploadBytes)
+    return; // a sender gone wrong: this link is no longer listened to
+  server.image.assign(bytes, std::byte{});
+  const auto deliver = [this, &server] {
+    ++uploads_;
+    if (uploads_sink_)
+      uploads_sink_(server.link, std::move(server.image));
+    server.image.clear();
+    listen(server);
+  };
+  if (bytes == 0) {
+    deliver();
+    return;
+  }
+  server.port->start_input(server.image, deliver);
 }
 
 } // namespace marsokhod::emulator

@@ -58,16 +58,24 @@ private:
   detail::LevelGround ground_;
 };
 
-// The disparity of what the pair can show at all: textured pixels
-// (NavigationOptions::featureless_grey_range) below the horizon whose ground the right camera
-// sees; +inf elsewhere. Where the level ground's disparity exceeds the column (x - d < 0) the
-// ground, and anything standing on it, lies outside the right image: a match found there can
-// only be a wrong, smaller disparity that the left-right check happened to confirm. Rocks and
-// rising ground just right of that strip are hidden from the right camera too; their wrong
-// matches are left to the left-right check and the columns' ordering test, which see them,
-// rather than to a wider strip, which would also hide the ground beside it. At or above the horizon
-// only the sky, or the top of something taller than the mast, can be seen; the sky must not become
-// terrain.
+// Per row, the first columns whose level ground lies outside the right image: the matcher keeps
+// them out of its right view (StereoOptions::unseen_columns), where their necessarily wrong
+// matches would otherwise compete with the true ones of the right image's first columns.
+std::pmr::vector<std::int16_t> columns_past_right_edge(const imaging::StereoRig& rig,
+                                                       const NavigationOptions& options,
+                                                       std::pmr::memory_resource* memory) {
+  std::pmr::vector<std::int16_t> columns(static_cast<std::size_t>(rig.height()), 0, memory);
+  const GroundRows ground(rig, options.attitude, rig.width(), memory);
+  for (int y = 0; y < rig.height(); ++y) {
+    const GroundRows::Line line = ground.line(y);
+    columns[static_cast<std::size_t>(y)] = static_cast<std::int16_t>(
+        detail::columns_past_edge(ground.fractions(), line.first_d, line.rise, rig.width()));
+  }
+  return columns;
+}
+
+} // namespace
+
 imaging::Image<float> seeable_disparity(imaging::ImageView<const std::uint8_t> left,
                                         const imaging::Image<float>& disparity,
                                         const imaging::StereoRig& rig,
@@ -90,30 +98,6 @@ imaging::Image<float> seeable_disparity(imaging::ImageView<const std::uint8_t> l
   return seeable;
 }
 
-// Per row, the first columns whose level ground lies outside the right image: the matcher keeps
-// them out of its right view (StereoOptions::unseen_columns), where their necessarily wrong
-// matches would otherwise compete with the true ones of the right image's first columns.
-std::pmr::vector<std::int16_t> columns_past_right_edge(const imaging::StereoRig& rig,
-                                                       const NavigationOptions& options,
-                                                       std::pmr::memory_resource* memory) {
-  std::pmr::vector<std::int16_t> columns(static_cast<std::size_t>(rig.height()), 0, memory);
-  const GroundRows ground(rig, options.attitude, rig.width(), memory);
-  for (int y = 0; y < rig.height(); ++y) {
-    const GroundRows::Line line = ground.line(y);
-    columns[static_cast<std::size_t>(y)] = static_cast<std::int16_t>(
-        detail::columns_past_edge(ground.fractions(), line.first_d, line.rise, rig.width()));
-  }
-  return columns;
-}
-
-NavigationResult without_path(NavigationResult result, std::string reason) {
-  result.plan.found = false;
-  result.plan.reason = std::move(reason);
-  return result;
-}
-
-} // namespace
-
 int rover_max_disparity(const imaging::StereoRig& rig, const imaging::Attitude& attitude) {
   double nearest = 0.0;
   const double bottom = rig.height() - 1.0;
@@ -121,6 +105,42 @@ int rover_max_disparity(const imaging::StereoRig& rig, const imaging::Attitude& 
     nearest = std::max(nearest, rig.ground_disparity(u, bottom, attitude));
   const int wanted = static_cast<int>(std::ceil(kNearRockAllowance * nearest));
   return std::clamp(wanted, 1, rig.width() - 1);
+}
+
+StereoOptions rover_stereo_options(const imaging::StereoRig& rig, const NavigationOptions& options,
+                                   std::pmr::vector<std::int16_t>& unseen) {
+  StereoOptions stereo = options.stereo;
+  if (stereo.max_disparity == 0)
+    stereo.max_disparity = rover_max_disparity(rig, options.attitude);
+  if (stereo.unseen_columns.empty()) {
+    unseen = columns_past_right_edge(rig, options, unseen.get_allocator().resource());
+    stereo.unseen_columns = unseen;
+  }
+  return stereo;
+}
+
+template <class Meter>
+PathPlan plan_cycle_path(const TerrainPoints& terrain, const ZoneMap& zones,
+                         const PlannerOptions& options, Meter& meter,
+                         std::pmr::memory_resource* memory) {
+  if (terrain.known_pixels == 0) {
+    PathPlan none{false,
+                  "no pixel of the disparity map gives a ground point",
+                  {},
+                  {},
+                  0.0,
+                  0.0,
+                  std::pmr::vector<PixelPoint>(memory)};
+    return none;
+  }
+  return plan_path(terrain, zones, options, meter, memory);
+}
+
+void explain_stereo_failure(const std::string& stereo_reason, PathPlan& plan) {
+  if (stereo_reason.empty())
+    return;
+  plan.found = false;
+  plan.reason = "stereo: " + stereo_reason;
 }
 
 template <class Meter>
@@ -141,9 +161,7 @@ NavigationResult navigate_disparity(imaging::ImageView<const float> disparity,
                           {},
                           {}};
   result.zones = find_zones(result.terrain, reliable, options.zones, meter, memory);
-  if (result.terrain.known_pixels == 0)
-    return without_path(std::move(result), "no pixel of the disparity map gives a ground point");
-  result.plan = plan_path(result.terrain, result.zones, options.planner, meter, memory);
+  result.plan = plan_cycle_path(result.terrain, result.zones, options.planner, meter, memory);
   if (result.plan.found)
     result.drive = plan_drive(result.terrain, result.plan.pixels, options.drive, memory);
   return result;
@@ -155,27 +173,21 @@ NavigationResult navigate(imaging::ImageView<const std::uint8_t> left,
                           const imaging::StereoRig& rig, const NavigationOptions& options,
                           Meter& meter, std::pmr::memory_resource* memory) {
   check_images_fit(left, right, rig);
-  StereoOptions stereo_options = options.stereo;
-  if (stereo_options.max_disparity == 0)
-    stereo_options.max_disparity = rover_max_disparity(rig, options.attitude);
   // Kept alive here: the options only point at it.
   std::pmr::vector<std::int16_t> unseen(memory);
-  if (stereo_options.unseen_columns.empty()) {
-    unseen = columns_past_right_edge(rig, options, memory);
-    stereo_options.unseen_columns = unseen;
-  }
+  const StereoOptions stereo_options = rover_stereo_options(rig, options, unseen);
   StereoResult stereo = match_stereo(left, right, stereo_options, meter, memory);
   const imaging::Image<float> seeable =
       seeable_disparity(left, stereo.disparity, rig, options, memory);
   NavigationResult result = navigate_disparity(seeable, stereo.valid, rig, options, meter, memory);
-  const std::string stereo_reason = stereo.reason;
+  explain_stereo_failure(stereo.reason, result.plan);
   result.stereo = std::move(stereo);
-  if (!stereo_reason.empty())
-    return without_path(std::move(result), "stereo: " + stereo_reason);
   return result;
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
+  template PathPlan plan_cycle_path<M>(const TerrainPoints&, const ZoneMap&,                       \
+                                       const PlannerOptions&, M&, std::pmr::memory_resource*);     \
   template NavigationResult navigate<M>(                                                           \
       imaging::ImageView<const std::uint8_t>, imaging::ImageView<const std::uint8_t>,              \
       const imaging::StereoRig&, const NavigationOptions&, M&, std::pmr::memory_resource*);        \

@@ -1,6 +1,6 @@
 // A pyramid layer's brightness features in the matcher's storage (private).
 
-#include "features/layer_features.hpp"
+#include "marsokhod/nav/features/layer_features.hpp"
 
 #include "features/census_rows.hpp"
 #include "work/work_report.hpp"
@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <array>
 
-namespace marsokhod::nav::detail {
+namespace marsokhod::nav {
 namespace {
 
 // The census bytes of every pixel; three padded rows take turns so that each image row is
@@ -36,8 +36,8 @@ imaging::Image<std::uint8_t> census3x3_bytes(imaging::ImageView<const std::uint8
   load(0);
   for (int y = 0; y < height; ++y) {
     load(y + 1);
-    census3x3_row(slot(y - 1) + 1, slot(y) + 1, slot(y + 1) + 1, width, bytes.row(y));
-    report(meter, Work::feature_pixel, static_cast<std::uint64_t>(width));
+    detail::census3x3_row(slot(y - 1) + 1, slot(y) + 1, slot(y + 1) + 1, width, bytes.row(y));
+    detail::report(meter, Work::feature_pixel, static_cast<std::uint64_t>(width));
   }
   return bytes;
 }
@@ -65,4 +65,4 @@ LayerFeatures layer_features(imaging::ImageView<const std::uint8_t> image, Featu
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 
-} // namespace marsokhod::nav::detail
+} // namespace marsokhod::nav

@@ -4,8 +4,9 @@
 // The feature columns of a band of scan lines, transposed for the cost kernels (private to the
 // stereo matcher).
 
-#include "features/layer_features.hpp"
 #include "matching/band_layout.hpp"
+
+#include "marsokhod/nav/features/layer_features.hpp"
 
 #include <cstdint>
 #include <memory_resource>

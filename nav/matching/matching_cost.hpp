@@ -3,9 +3,10 @@
 
 // Matching costs of a band of scan lines (private to the stereo matcher).
 
-#include "features/layer_features.hpp"
 #include "matching/band_columns.hpp"
 #include "matching/band_layout.hpp"
+
+#include "marsokhod/nav/features/layer_features.hpp"
 
 #include <cstdint>
 #include <memory_resource>

@@ -70,8 +70,9 @@ DrivePlan plan_drive(std::span<const GroundPoint> ground_path, const DriveOption
   return plan;
 }
 
-DrivePlan plan_drive(const TerrainPoints& terrain, std::span<const PixelPoint> path,
-                     const DriveOptions& options, std::pmr::memory_resource* memory) {
+std::pmr::vector<GroundPoint> ground_path(const TerrainPoints& terrain,
+                                          std::span<const PixelPoint> path,
+                                          std::pmr::memory_resource* memory) {
   std::pmr::vector<GroundPoint> ground(memory);
   ground.reserve(path.size());
   for (const PixelPoint& pixel : path) {
@@ -80,7 +81,12 @@ DrivePlan plan_drive(const TerrainPoints& terrain, std::span<const PixelPoint> p
           "plan_drive: path pixel ({}, {}) has no known ground point", pixel.x, pixel.y));
     ground.push_back({terrain.forward(pixel.x, pixel.y), terrain.left(pixel.x, pixel.y)});
   }
-  return plan_drive(ground, options, memory);
+  return ground;
+}
+
+DrivePlan plan_drive(const TerrainPoints& terrain, std::span<const PixelPoint> path,
+                     const DriveOptions& options, std::pmr::memory_resource* memory) {
+  return plan_drive(ground_path(terrain, path, memory), options, memory);
 }
 
 } // namespace marsokhod::nav

@@ -16,4 +16,7 @@ namespace marsokhod::nav::detail {
 void check_pair(imaging::ImageView<const std::uint8_t> left,
                 imaging::ImageView<const std::uint8_t> right, const StereoOptions& options);
 
+/// The checks of check_pair that need only the pair's size: options, search range, pyramid.
+void check_pair_size(int width, int height, const StereoOptions& options);
+
 } // namespace marsokhod::nav::detail

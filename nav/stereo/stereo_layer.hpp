@@ -3,11 +3,11 @@
 
 // Matching of one pyramid layer (private to the stereo matcher).
 
-#include "features/layer_features.hpp"
 #include "matching/band_layout.hpp"
 #include "stereo/coarse_guide.hpp"
 
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/features/layer_features.hpp"
 #include "marsokhod/nav/stereo/stereo.hpp"
 
 #include <cstdint>

@@ -77,23 +77,30 @@ void check_pair(imaging::ImageView<const std::uint8_t> left,
     throw std::invalid_argument(
         fmt::format("stereo: the left image is {}x{} but the right is {}x{}", left.width(),
                     left.height(), right.width(), right.height()));
-  if (options.max_disparity >= left.width())
+  check_pair_size(left.width(), left.height(), options);
+}
+
+void check_pair_size(int width, int height, const StereoOptions& options) {
+  validate(options);
+  if (width < 1 || height < 1)
+    throw std::invalid_argument("stereo: an image is empty");
+  if (options.max_disparity >= width)
     throw std::invalid_argument(
         fmt::format("stereo: max_disparity {} does not fit in an image {} pixels wide",
-                    options.max_disparity, left.width()));
+                    options.max_disparity, width));
   if (!options.unseen_columns.empty() &&
-      options.unseen_columns.size() != static_cast<std::size_t>(left.height()))
+      options.unseen_columns.size() != static_cast<std::size_t>(height))
     throw std::invalid_argument(
         fmt::format("stereo: unseen_columns has {} rows but the images have {}",
-                    options.unseen_columns.size(), left.height()));
-  const int levels = pyramid_levels_for(left.width(), left.height(), options);
-  const int top_width = left.width() >> (levels - 1);
-  const int top_height = left.height() >> (levels - 1);
+                    options.unseen_columns.size(), height));
+  const int levels = pyramid_levels_for(width, height, options);
+  const int top_width = width >> (levels - 1);
+  const int top_height = height >> (levels - 1);
   if (top_width < kMinLayerSide || top_height < kMinLayerSide)
     throw std::invalid_argument(fmt::format(
         "stereo: a {}x{} image is too small for {} pyramid layers: the top layer would be {}x{}, "
         "at least {}x{} is needed",
-        left.width(), left.height(), levels, top_width, top_height, kMinLayerSide, kMinLayerSide));
+        width, height, levels, top_width, top_height, kMinLayerSide, kMinLayerSide));
 }
 
 } // namespace detail

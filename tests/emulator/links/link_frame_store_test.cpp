@@ -79,5 +79,43 @@ TEST(FrameStore, OnlyFrameStoreDevicesQualify) {
   EXPECT_THROW(FrameStore(network, *card.find_device("host"), {}), std::invalid_argument);
 }
 
+TEST(FrameStore, HandsEachUploadToTheSinkWithItsLink) {
+  const PlatformSpec onboard = load_platform(kPlatforms / "onboard.toml");
+  Kernel kernel;
+  Cpu& module1 = kernel.add_cpu("module1");
+  LinkNetwork network(kernel, onboard);
+  std::vector<std::pair<int, std::vector<std::byte>>> received;
+  FrameStore store(
+      network, *onboard.find_device("rover_io"),
+      [](int camera) { return test_image(camera, 128 * 128); },
+      [&](int link, std::vector<std::byte> bytes) {
+        received.emplace_back(link, std::move(bytes));
+      });
+  const std::vector<std::byte> payload = test_image(2, 300);
+  kernel.spawn(module1, "telemetry", [&] {
+    LinkPort& devices = network.require_port("module1", 3);
+    // 300 = 0x012C, little-endian after the request byte; then an empty upload.
+    const std::byte header[] = {FrameStore::kUploadRequest, std::byte{0x2C}, std::byte{0x01},
+                                std::byte{0}, std::byte{0}};
+    devices.output(header);
+    devices.output(payload);
+    const std::byte empty[] = {FrameStore::kUploadRequest, std::byte{0}, std::byte{0}, std::byte{0},
+                               std::byte{0}};
+    devices.output(empty);
+    // The store still answers image requests afterwards.
+    const std::byte camera0{0};
+    std::vector<std::byte> left(128 * 128);
+    devices.output(std::span(&camera0, 1));
+    devices.input(left);
+  });
+  EXPECT_EQ(kernel.run().reason, StopReason::finished);
+  ASSERT_EQ(received.size(), 2U);
+  EXPECT_EQ(received[0].first, 1); // module1.link3 is wired to rover_io.link1
+  EXPECT_EQ(received[0].second, payload);
+  EXPECT_TRUE(received[1].second.empty());
+  EXPECT_EQ(store.uploads_received(), 2U);
+  EXPECT_EQ(store.requests_served(), 1U);
+}
+
 } // namespace
 } // namespace marsokhod::emulator

@@ -42,6 +42,41 @@ struct NavigationOptions {
 /// image width minus one.
 int rover_max_disparity(const imaging::StereoRig& rig, const imaging::Attitude& attitude);
 
+/// The stereo options a rover cycle matches with: options.stereo, with the search range from
+/// the rig when it is 0 and, unless given, the first columns of each row whose level ground lies
+/// outside the right image (StereoOptions::unseen_columns). Those columns are written into
+/// `unseen` (from its memory resource), which the options then point at: it must outlive them.
+StereoOptions rover_stereo_options(const imaging::StereoRig& rig, const NavigationOptions& options,
+                                   std::pmr::vector<std::int16_t>& unseen);
+
+/// What navigate() makes of the matcher's disparity before the terrain: the disparity of what
+/// the pair can show at all, textured pixels
+/// (NavigationOptions::featureless_grey_range) below the horizon whose ground the right camera
+/// sees; +inf elsewhere. Where the level ground's disparity exceeds the column (x - d < 0) the
+/// ground, and anything standing on it, lies outside the right image: a match found there can
+/// only be a wrong, smaller disparity that the left-right check happened to confirm. Rocks and
+/// rising ground just right of that strip are hidden from the right camera too; their wrong
+/// matches are left to the left-right check and the columns' ordering test, which see them,
+/// rather than to a wider strip, which would also hide the ground beside it. At or above the
+/// horizon only the sky, or the top of something taller than the mast, can be seen; the sky must
+/// not become terrain.
+imaging::Image<float> seeable_disparity(imaging::ImageView<const std::uint8_t> left,
+                                        const imaging::Image<float>& disparity,
+                                        const imaging::StereoRig& rig,
+                                        const NavigationOptions& options,
+                                        std::pmr::memory_resource* memory);
+
+/// The cycle's safest path over the zones: plan_path, or no path when no pixel of the terrain
+/// is known. Instantiated for NullMeter, CountingMeter and DynamicMeter.
+template <class Meter = NullMeter>
+PathPlan plan_cycle_path(const TerrainPoints& terrain, const ZoneMap& zones,
+                         const PlannerOptions& options, Meter& meter = null_meter,
+                         std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+
+/// A stereo matcher that gave up (a non-empty reason) leaves the cycle without a path, for
+/// that reason ("stereo: ..."), whatever the planner made of its empty map.
+void explain_stereo_failure(const std::string& stereo_reason, PathPlan& plan);
+
 /// 255 where the 5 x 5 neighbourhood of a pixel spans at least `grey_range` grey levels, 0
 /// where it is featureless (NavigationOptions::featureless_grey_range).
 imaging::Image<std::uint8_t>

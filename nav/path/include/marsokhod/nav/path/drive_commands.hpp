@@ -54,6 +54,12 @@ simplify_polyline(std::span<const GroundPoint> points, double tolerance_m,
 DrivePlan plan_drive(std::span<const GroundPoint> ground_path, const DriveOptions& options,
                      std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
+/// The ground points of a pixel path over the terrain; std::invalid_argument for a pixel with
+/// no known point.
+std::pmr::vector<GroundPoint>
+ground_path(const TerrainPoints& terrain, std::span<const PixelPoint> path,
+            std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+
 /// The same for a pixel path over the terrain (each pixel must be known).
 DrivePlan plan_drive(const TerrainPoints& terrain, std::span<const PixelPoint> path,
                      const DriveOptions& options,

@@ -3,6 +3,7 @@
 
 #include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/nav/features/brightness_features.hpp"
+#include "marsokhod/nav/features/pair_pyramid.hpp"
 #include "marsokhod/nav/matching/scanline_dp.hpp"
 #include "marsokhod/nav/stereo/disparity_fill.hpp"
 #include "marsokhod/nav/work/work.hpp"
@@ -14,9 +15,6 @@
 #include <vector>
 
 namespace marsokhod::nav {
-
-/// Most layers an image pyramid may have.
-inline constexpr int kMaxPyramidLevels = 6;
 
 /// How the stereo matcher searches (docs/navigation.md, "Stereo reconstruction").
 struct StereoOptions {
