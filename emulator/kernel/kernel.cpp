@@ -63,6 +63,16 @@ bool Kernel::cancel(EventId id) {
   return impl_->events.cancel(id);
 }
 
+bool Kernel::advance_to_next_step(Tick at) {
+  const Tick after_limit = impl_->limit == kNever ? kNever : impl_->limit + 1;
+  if (current_ != nullptr || stop_requested_ || impl_->failure || at < now_ ||
+      at >= impl_->events.next_time() || at >= after_limit)
+    return false;
+  now_ = at;
+  refresh_horizon();
+  return true;
+}
+
 std::size_t Kernel::pending_events() const {
   return impl_->events.foreground();
 }

@@ -80,7 +80,10 @@ void Link::set_broken(bool broken) {
 }
 
 void Link::reschedule() {
-  const Tick next = framing_.next_time();
+  schedule_next(framing_.next_time());
+}
+
+void Link::schedule_next(Tick next) {
   if (next == event_time_)
     return;
   if (event_ != 0)
@@ -91,12 +94,21 @@ void Link::reschedule() {
     event_ = kernel_->schedule_at(next, event_priority::link, *this);
 }
 
+// A message is a long chain of packet steps; while nothing else is due in between, the steps
+// are taken here one after the other rather than each through the event queue.
 void Link::on_event(std::uint64_t /*tag*/) {
   event_ = 0;
   event_time_ = kNever;
-  while (framing_.next_time() <= kernel_->now())
-    handle(framing_.step());
-  reschedule();
+  Tick next = framing_.next_time();
+  for (;;) {
+    while (next <= kernel_->now()) {
+      handle(framing_.step());
+      next = framing_.next_time();
+    }
+    if (next == kNever || !kernel_->advance_to_next_step(next))
+      break;
+  }
+  schedule_next(next);
 }
 
 void Link::handle(const LinkStep& step) {
@@ -126,9 +138,9 @@ void Link::on_data_start(int sender) {
 void Link::on_data_end(int sender, bool accepted) {
   LinkPort& receiver = ports_[1 - sender];
   const std::uint64_t flow = std::exchange(last_byte_flow_[sender], 0);
-  TraceSink* sink = trace();
-  if (flow != 0 && sink != nullptr)
-    sink->flow_end(receiver.in_track_, kernel_->now(), flow);
+  if (flow != 0)
+    if (TraceSink* sink = trace())
+      sink->flow_end(receiver.in_track_, kernel_->now(), flow);
   if (accepted) {
     LinkPort::Transfer& in = receiver.input_;
     if (!in.active)

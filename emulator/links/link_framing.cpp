@@ -77,32 +77,6 @@ void LinkFraming::reset_end(int end, Tick now, bool alive) {
   ends_[end].next_data_allowed = wire_free;
 }
 
-Tick LinkFraming::ack_start_time(int end) const {
-  const End& self = ends_[end];
-  if (!self.ack_owed || !self.alive)
-    return kNever;
-  return std::max({now_, self.wire_free, self.ack_ready});
-}
-
-Tick LinkFraming::data_start_time(int end) const {
-  const End& self = ends_[end];
-  if (!self.alive || self.queued == 0 || self.awaiting_ack)
-    return kNever;
-  const Tick at = std::max({now_, self.wire_free, self.next_data_allowed});
-  // An owed acknowledge that can go no later than the data goes first.
-  if (ack_start_time(end) <= at)
-    return kNever;
-  return at;
-}
-
-Tick LinkFraming::next_time() const {
-  Tick next = kNever;
-  for (int end = 0; end < 2; ++end)
-    next = std::min(
-        {next, ends_[end].data_end, ends_[end].ack_end, ack_start_time(end), data_start_time(end)});
-  return next;
-}
-
 void LinkFraming::start_data(int sender, Tick at) {
   End& self = ends_[sender];
   --self.queued;

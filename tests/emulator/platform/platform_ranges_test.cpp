@@ -29,8 +29,12 @@ std::string read(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// Named for the test as well: ctest runs the tests of this file in parallel processes, which
+// must not write each other's files.
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / name;
+  const std::string test = testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::filesystem::path path =
+      std::filesystem::path(testing::TempDir()) / (test + "-" + name);
   std::ofstream(path) << text;
   return path;
 }

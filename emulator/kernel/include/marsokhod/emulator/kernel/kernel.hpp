@@ -126,6 +126,11 @@ public:
   }
   /// Removes a pending event; returns false if it already ran or was cancelled.
   bool cancel(EventId id);
+  /// For an event handler with a chain of steps of its own (a link's packets): moves the clock
+  /// to `at` when no other event is due before it or at it and the run's limit allows, so that
+  /// the handler takes its next step at once, exactly when the queue would have run it, without
+  /// a trip through the queue. Returns false, changing nothing, otherwise (and inside a process).
+  bool advance_to_next_step(Tick at);
   /// Pending foreground events.
   std::size_t pending_events() const;
 

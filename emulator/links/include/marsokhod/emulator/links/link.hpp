@@ -106,6 +106,8 @@ private:
   friend class LinkPort;
   void offered();
   void reschedule();
+  /// reschedule() for a next step time already worked out.
+  void schedule_next(Tick next);
   void handle(const LinkStep& step);
   void on_data_start(int sender);
   void on_data_end(int sender, bool accepted);

@@ -4,6 +4,7 @@
 #include "marsokhod/emulator/kernel/time.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -115,5 +116,33 @@ private:
   Tick now_ = 0;
   bool broken_ = false;
 };
+
+// Asked for after every packet step: inline.
+
+inline Tick LinkFraming::ack_start_time(int end) const {
+  const End& self = ends_[end];
+  if (!self.ack_owed || !self.alive)
+    return kNever;
+  return std::max({now_, self.wire_free, self.ack_ready});
+}
+
+inline Tick LinkFraming::data_start_time(int end) const {
+  const End& self = ends_[end];
+  if (!self.alive || self.queued == 0 || self.awaiting_ack)
+    return kNever;
+  const Tick at = std::max({now_, self.wire_free, self.next_data_allowed});
+  // An owed acknowledge that can go no later than the data goes first.
+  if (ack_start_time(end) <= at)
+    return kNever;
+  return at;
+}
+
+inline Tick LinkFraming::next_time() const {
+  Tick next = kNever;
+  for (int end = 0; end < 2; ++end)
+    next = std::min(
+        {next, ends_[end].data_end, ends_[end].ack_end, ack_start_time(end), data_start_time(end)});
+  return next;
+}
 
 } // namespace marsokhod::emulator
