@@ -1,6 +1,8 @@
 // The reader table: seeds, companion files and the checked call of every project file reader.
 #include "fuzz/reader_targets.hpp"
 
+#include "fuzz/placement_reader.hpp"
+
 #include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/eval/stereo/stereo_pairs.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
@@ -26,17 +28,6 @@ const fs::path kSource = MARSOKHOD_SOURCE_DIR;
 
 bool finite(double value) {
   return std::isfinite(value);
-}
-
-std::vector<Seed> shipped(std::initializer_list<const char*> paths) {
-  std::vector<Seed> seeds;
-  for (const char* path : paths) {
-    Bytes bytes = file_bytes(kSource / path);
-    if (bytes.empty())
-      throw std::runtime_error("seed file " + (kSource / path).string() + " is missing or empty");
-    seeds.push_back({path, std::move(bytes)});
-  }
-  return seeds;
 }
 
 // ---- platform and processor files ----
@@ -261,6 +252,17 @@ void read_pfm_image(const fs::path& input) {
 
 } // namespace
 
+std::vector<Seed> shipped(std::initializer_list<const char*> paths) {
+  std::vector<Seed> seeds;
+  for (const char* path : paths) {
+    Bytes bytes = file_bytes(kSource / path);
+    if (bytes.empty())
+      throw std::runtime_error("seed file " + (kSource / path).string() + " is missing or empty");
+    seeds.push_back({path, std::move(bytes)});
+  }
+  return seeds;
+}
+
 void expect(bool ok, const std::string& problem) {
   if (!ok)
     throw Garbage{problem};
@@ -281,6 +283,7 @@ const std::vector<ReaderTarget>& reader_targets() {
       {"image",       "input.img",        Syntax::binary, image_seeds,       nullptr,           read_any_image,   {}},
       {"gray8",       "input.img",        Syntax::binary, gray8_seeds,       nullptr,           read_gray8_image, {}},
       {"pfm",         "input.pfm",        Syntax::binary, pfm_seeds,         nullptr,           read_pfm_image,   {}},
+      {"placement",   "placement.toml",   Syntax::toml,   placement_seeds,   nullptr,           read_placement,   {}},
   };
   // clang-format on
   return targets;

@@ -4,6 +4,7 @@
 #include "fuzz/mutation_engine.hpp"
 
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,10 @@ struct Seed {
 struct Garbage {
   std::string problem;
 };
+
+/// Seeds from files of the source tree, labelled by their paths relative to it; throws
+/// std::runtime_error for a missing or empty one.
+std::vector<Seed> shipped(std::initializer_list<const char*> paths);
 
 /// Throws Garbage{problem} unless `ok`; the read calls use it to check what they got.
 void expect(bool ok, const std::string& problem);

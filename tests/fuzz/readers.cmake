@@ -4,12 +4,13 @@
 
 set(reader_fuzz_dir "${CMAKE_CURRENT_LIST_DIR}")
 add_library(marsokhod_reader_registry STATIC "${reader_fuzz_dir}/mutation_engine.cpp"
+                                             "${reader_fuzz_dir}/placement_reader.cpp"
                                              "${reader_fuzz_dir}/reader_targets.cpp"
                                              "${reader_fuzz_dir}/reader_verdict.cpp")
 target_include_directories(marsokhod_reader_registry PUBLIC "${CMAKE_SOURCE_DIR}/tests")
-target_link_libraries(marsokhod_reader_registry PUBLIC marsokhod_emulator marsokhod_eval
-                      marsokhod_nav marsokhod_world marsokhod_imaging marsokhod_io fmt::fmt
-                      tomlplusplus::tomlplusplus nlohmann_json::nlohmann_json)
+target_link_libraries(marsokhod_reader_registry PUBLIC marsokhod_occam_port marsokhod_emulator
+                      marsokhod_eval marsokhod_nav marsokhod_world marsokhod_imaging marsokhod_io
+                      fmt::fmt tomlplusplus::tomlplusplus nlohmann_json::nlohmann_json)
 target_compile_definitions(
   marsokhod_reader_registry
   PRIVATE MARSOKHOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}"

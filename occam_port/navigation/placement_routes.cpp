@@ -1,0 +1,136 @@
+// The checks of a placement that need the whole file: every process of the program placed,
+// every channel between two nodes on a wire, every device reachable from its process's node.
+
+#include "navigation/placement_checks.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+namespace marsokhod::occam_port::detail {
+namespace {
+
+using emulator::PlatformSpec;
+using emulator::WireSpec;
+
+/// A wire directly joining nodes `x` and `y`, either way round, broken or not; nullptr if none.
+const WireSpec* wire_between(const PlatformSpec& platform, const std::string& x,
+                             const std::string& y) {
+  // A broken wire is only taken when no sound one joins the pair, so that the message can say
+  // a cable is broken rather than missing.
+  const WireSpec* found = nullptr;
+  for (const WireSpec& wire : platform.wires) {
+    const bool joins =
+        !wire.a.device && !wire.b.device &&
+        ((wire.a.owner == x && wire.b.owner == y) || (wire.a.owner == y && wire.b.owner == x));
+    if (joins && (found == nullptr || found->broken))
+      found = &wire;
+  }
+  return found;
+}
+
+/// Whether `node` has an unbroken wire to a powered device that serves the program: a frame
+/// store (images) or a host (images and telemetry on the PC card).
+bool reaches_a_device(const PlatformSpec& platform, const std::string& node) {
+  return std::any_of(
+      platform.wires.begin(), platform.wires.end(),
+      [&](const WireSpec& wire) {
+        if (wire.broken)
+          return false;
+        const bool a_is_node = !wire.a.device && wire.a.owner == node;
+        const bool b_is_node = !wire.b.device && wire.b.owner == node;
+        const emulator::LinkEndpoint& other = a_is_node ? wire.b : wire.a;
+        if ((!a_is_node && !b_is_node) || !other.device)
+          return false;
+        const emulator::DeviceSpec* device = platform.find_device(other.owner);
+        return device != nullptr && device->powered &&
+               (device->kind == emulator::DeviceKind::frame_store ||
+                device->kind == emulator::DeviceKind::host);
+      });
+}
+
+} // namespace
+
+void check_shape(const ProgramShape& shape) {
+  const std::set<std::string, std::less<>> processes(shape.processes.begin(),
+                                                     shape.processes.end());
+  if (processes.size() != shape.processes.size())
+    throw std::invalid_argument("program shape: a process is listed twice");
+  auto known = [&](const std::string& process, const std::string& what) {
+    if (!processes.contains(process))
+      throw std::invalid_argument(fmt::format(
+          "program shape: {} names process '{}', which it does not list", what, process));
+  };
+  for (const ProgramShape::Channel& channel : shape.channels) {
+    known(channel.from, fmt::format("channel '{}'", channel.name));
+    known(channel.to, fmt::format("channel '{}'", channel.name));
+  }
+  for (const ProgramShape::DeviceUse& use : shape.devices)
+    known(use.process, fmt::format("the device use '{}'", use.purpose));
+}
+
+void check_program_fits(const Placement& placement, int header_line, const PlatformSpec& platform,
+                        const ProgramShape& shape) {
+  // Every entry names a distinct process of the shape, so each is found here once.
+  std::map<std::string, std::size_t, std::less<>> index;
+  for (std::size_t i = 0; i < placement.places.size(); ++i)
+    index.emplace(placement.places[i].process, i);
+
+  std::vector<std::string> missing;
+  for (const std::string& process : shape.processes)
+    if (!index.contains(process))
+      missing.push_back(process);
+  if (!missing.empty())
+    throw PlacementError(placement.source, header_line, "process",
+                         fmt::format("not placed: {} (every process of the program needs a "
+                                     "[[process]] with its name and node)",
+                                     fmt::join(missing, ", ")));
+
+  for (const ProgramShape::Channel& channel : shape.channels) {
+    const std::size_t from = index.at(channel.from);
+    const std::size_t to = index.at(channel.to);
+    const ProcessPlace& a = placement.places[from];
+    const ProcessPlace& b = placement.places[to];
+    if (a.node == b.node)
+      continue;
+    const WireSpec* wire = wire_between(platform, a.node, b.node);
+    if (wire != nullptr && !wire->broken)
+      continue;
+    // Reported where the second of the two is placed: the entry that broke the route.
+    const std::size_t later = std::max(from, to);
+    const std::string why = wire == nullptr
+                                ? fmt::format("no wire joins {} and {}", a.node, b.node)
+                                : fmt::format("the wire joining {} and {} ({}:{}) is broken",
+                                              a.node, b.node, platform.source, wire->line);
+    throw PlacementError(placement.source, placement.places[later].line,
+                         fmt::format("process[{}].node", later),
+                         fmt::format("channel '{}' from {} (on {}) to {} (on {}) has no route: {}; "
+                                     "place both on one node or on two nodes wired to each other",
+                                     channel.name, a.process, a.node, b.process, b.node, why));
+  }
+
+  for (const ProgramShape::DeviceUse& use : shape.devices) {
+    const std::size_t i = index.at(use.process);
+    const ProcessPlace& place = placement.places[i];
+    if (reaches_a_device(platform, place.node))
+      continue;
+    std::vector<std::string> able;
+    for (const emulator::NodeSpec& node : platform.nodes)
+      if (node.powered && reaches_a_device(platform, node.name))
+        able.push_back(node.name);
+    throw PlacementError(
+        placement.source, place.line, fmt::format("process[{}].node", i),
+        fmt::format("process '{}' needs {}, but its node {} has no unbroken wire to a powered "
+                    "frame_store or host device ({})",
+                    use.process, use.purpose, place.node,
+                    able.empty()
+                        ? std::string("no powered node has one")
+                        : fmt::format("powered nodes with one: {}", fmt::join(able, ", "))));
+  }
+}
+
+} // namespace marsokhod::occam_port::detail
