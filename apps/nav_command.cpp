@@ -34,12 +34,8 @@ struct NavCli {
   fs::path left;
   fs::path right;
   fs::path out;
-  std::optional<fs::path> rig_file;
+  PairOptions pair;
   std::optional<fs::path> disparity_file;
-  std::optional<fs::path> scene_file;
-  std::optional<fs::path> calibration_file;
-  double pitch_deg = 0.0;
-  double roll_deg = 0.0;
   double heading_deg = 0.0;
   double max_step_m = nav::ZoneOptions{}.max_step_m;
   bool json = false;
@@ -95,11 +91,10 @@ int run_nav(const NavCli& cli) {
     throw CommandError(fmt::format("{} is {}x{} but {} is {}x{}; a stereo pair has one size",
                                    cli.left.string(), left.width(), left.height(),
                                    cli.right.string(), right.width(), right.height()));
-  const imaging::StereoRig rig = rig_for(cli.rig_file, cli.left, left.width(), left.height());
-  right = aligned_right(cli.calibration_file, std::move(right));
+  const imaging::StereoRig rig = rig_for(cli.pair.rig_file, cli.left, left.width(), left.height());
+  right = aligned_right(cli.pair.calibration_file, std::move(right));
   nav::NavigationOptions options;
-  options.attitude = cli.scene_file ? scene_attitude(*cli.scene_file)
-                                    : imaging::Attitude{cli.pitch_deg, cli.roll_deg};
+  options.attitude = pair_attitude(cli.pair);
   options.planner.heading_deg = cli.heading_deg;
   options.zones.max_step_m = cli.max_step_m;
   std::optional<imaging::Image<float>> given;
@@ -144,15 +139,7 @@ Command make_nav_command(CLI::App& parent) {
   app->add_option("LEFT", cli->left, "Left (reference) image: PGM, PPM or PNG")->required();
   app->add_option("RIGHT", cli->right, "Right image of the same size")->required();
   app->add_option("--out", cli->out, "Output folder (created if missing)")->required();
-  app->add_option("--rig", cli->rig_file,
-                  "Rig TOML file (docs/formats.md); default: the paper's rig at the images' size");
-  CLI::Option* pitch = app->add_option("--pitch", cli->pitch_deg,
-                                       "Rover pitch from the inclinometer, deg, nose up +")
-                           ->check(real_between(-45.0, 45.0))
-                           ->capture_default_str();
-  CLI::Option* roll = app->add_option("--roll", cli->roll_deg, "Rover roll, deg, right side down +")
-                          ->check(real_between(-45.0, 45.0))
-                          ->capture_default_str();
+  add_pair_options(*app, cli->pair);
   app->add_option("--heading", cli->heading_deg,
                   "Mission heading relative to the rover's, deg, counter-clockwise +")
       ->check(real_between(-180.0, 180.0))
@@ -162,13 +149,6 @@ Command make_nav_command(CLI::App& parent) {
       ->capture_default_str();
   app->add_option("--disparity", cli->disparity_file,
                   "Use this disparity map (PFM, +inf unknown) instead of matching the pair");
-  app->add_option("--scene", cli->scene_file,
-                  "Take pitch and roll from a scene.json written by `marsokhod world`")
-      ->excludes(pitch)
-      ->excludes(roll);
-  app->add_option("--calibration", cli->calibration_file,
-                  "Remove this vertical parallax map (from `marsokhod calibrate`) from the right "
-                  "image before matching");
   app->add_flag("--json", cli->json, "Print a machine-readable summary on stdout");
   return {app, [cli] { return run_nav(*cli); }};
 }

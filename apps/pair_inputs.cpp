@@ -3,11 +3,13 @@
 #include "pair_inputs.hpp"
 
 #include "command.hpp"
+#include "option_checks.hpp"
 
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
 #include "marsokhod/world/scene/scene_file.hpp"
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <exception>
@@ -72,6 +74,31 @@ imaging::Attitude scene_attitude(const fs::path& path) {
     throw CommandError(
         fmt::format("{}: cannot read the scene file: {}", path.string(), error.what()));
   }
+}
+
+void add_pair_options(CLI::App& app, PairOptions& options) {
+  app.add_option("--rig", options.rig_file,
+                 "Rig TOML file (docs/formats.md); default: the paper's rig at the images' size");
+  CLI::Option* pitch = app.add_option("--pitch", options.pitch_deg,
+                                      "Rover pitch from the inclinometer, deg, nose up +")
+                           ->check(real_between(-45.0, 45.0))
+                           ->capture_default_str();
+  CLI::Option* roll =
+      app.add_option("--roll", options.roll_deg, "Rover roll, deg, right side down +")
+          ->check(real_between(-45.0, 45.0))
+          ->capture_default_str();
+  app.add_option("--scene", options.scene_file,
+                 "Take pitch and roll from a scene.json written by `marsokhod world`")
+      ->excludes(pitch)
+      ->excludes(roll);
+  app.add_option("--calibration", options.calibration_file,
+                 "Remove this vertical parallax map (from `marsokhod calibrate`) from the right "
+                 "image before matching");
+}
+
+imaging::Attitude pair_attitude(const PairOptions& options) {
+  return options.scene_file ? scene_attitude(*options.scene_file)
+                            : imaging::Attitude{options.pitch_deg, options.roll_deg};
 }
 
 } // namespace marsokhod::apps

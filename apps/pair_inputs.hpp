@@ -9,7 +9,28 @@
 #include <filesystem>
 #include <optional>
 
+namespace CLI {
+class App;
+} // namespace CLI
+
 namespace marsokhod::apps {
+
+/// The options that describe a pair beside its two images, shared by every command that runs a
+/// cycle on one: its rig, the rover's attitude (or the scene file that records it) and the
+/// vertical parallax calibration.
+struct PairOptions {
+  std::optional<std::filesystem::path> rig_file;
+  std::optional<std::filesystem::path> scene_file;
+  std::optional<std::filesystem::path> calibration_file;
+  double pitch_deg = 0.0;
+  double roll_deg = 0.0;
+};
+
+/// Adds --rig, --pitch, --roll, --scene and --calibration to a command.
+void add_pair_options(CLI::App& app, PairOptions& options);
+
+/// The rover's attitude: from the scene file when given, else --pitch and --roll.
+imaging::Attitude pair_attitude(const PairOptions& options);
 
 /// An 8-bit grey image; CommandError naming the file when it cannot be read.
 imaging::Image<std::uint8_t> read_grey(const std::filesystem::path& path);

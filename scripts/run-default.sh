@@ -1,18 +1,23 @@
 #!/bin/sh
 # The main job of `make run`: renders the default synthetic Mars scene with its ground truth,
-# then runs one navigation cycle on the rendered pair.
+# runs one navigation cycle on the rendered pair, then the same cycle at 128 x 128 as OCCAM
+# processes on the emulated PC transputer card.
 set -eu
 marsokhod="$1"
 out="$2"
 world_dir="$out/world-seed3"
 nav_dir="$out/nav-seed3"
+emulate_dir="$out/emulate-pc-card-seed3"
 
 "$marsokhod" world --seed 3 --size 256 --out "$world_dir"
 echo
 "$marsokhod" nav "$world_dir/left.pgm" "$world_dir/right.pgm" --scene "$world_dir/scene.json" \
   --out "$nav_dir"
 echo
-echo "make run: results are in $world_dir and $nav_dir"
+"$marsokhod" emulate --platform pc-card --seed 3 --size 128 --out "$emulate_dir" \
+  --trace "$emulate_dir/trace.json"
+echo
+echo "make run: results are in $world_dir, $nav_dir and $emulate_dir"
 echo "  $world_dir:"
 echo "    left.png / right.png              the rendered stereo pair"
 echo "    gt_disparity.png, gt_range.png    ground truth, false colour with a legend"
@@ -23,3 +28,6 @@ echo "    disparity.png, elevation.png      the matched disparity and the elevat
 echo "    zones.png                         prohibited white, rover margin grey, traversable black"
 echo "    path_overlay.png                  the safest path over the left image"
 echo "    path.json                         path, start/fracture/target distances, drive commands"
+echo "  $emulate_dir:"
+echo "    the same products as nav, from the emulated cycle at 128 x 128 on the PC card"
+echo "    trace.json                        the cycle in Perfetto (ui.perfetto.dev): CPUs, stages, links, memory"

@@ -90,6 +90,8 @@ void check_program_fits(const Placement& placement, int header_line, const Platf
                                      "[[process]] with its name and node)",
                                      fmt::join(missing, ", ")));
 
+  // An occam configuration maps one channel onto each direction of a link.
+  std::map<std::pair<std::string, std::string>, const ProgramShape::Channel*> directions;
   for (const ProgramShape::Channel& channel : shape.channels) {
     const std::size_t from = index.at(channel.from);
     const std::size_t to = index.at(channel.to);
@@ -98,8 +100,19 @@ void check_program_fits(const Placement& placement, int header_line, const Platf
     if (a.node == b.node)
       continue;
     const WireSpec* wire = wire_between(platform, a.node, b.node);
-    if (wire != nullptr && !wire->broken)
-      continue;
+    if (wire != nullptr && !wire->broken) {
+      const auto [taken, added] = directions.emplace(std::pair{a.node, b.node}, &channel);
+      if (added)
+        continue;
+      const std::size_t later = std::max(from, to);
+      throw PlacementError(
+          placement.source, placement.places[later].line, fmt::format("process[{}].node", later),
+          fmt::format("channels '{}' and '{}' would both need the link from {} to {} ({}:{}); "
+                      "occam places one channel on each direction of a link: place them "
+                      "otherwise",
+                      taken->second->name, channel.name, a.node, b.node, platform.source,
+                      wire->line));
+    }
     // Reported where the second of the two is placed: the entry that broke the route.
     const std::size_t later = std::max(from, to);
     const std::string why = wire == nullptr

@@ -20,25 +20,15 @@ namespace {
 
 namespace fs = std::filesystem;
 using marsokhod::imaging::Image;
+using marsokhod::testing::quoted;
 using marsokhod::testing::run_marsokhod;
+using marsokhod::testing::slurp;
 
 fs::path fresh_folder(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / "marsokhod-nav-tests" / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::string quoted(const fs::path& path) {
-  std::string text = "'";
-  text.append(path.string());
-  text.push_back('\'');
-  return text;
 }
 
 // A rendered 128 px scene of a small site, made once per test process. ctest runs each test in

@@ -1,9 +1,8 @@
 // The placement reader under mutation: seeds, and the call that judges what it returned.
 #include "fuzz/placement_reader.hpp"
 
-#include "support/navigation_program.hpp"
-
 #include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/occam_port/navigation/navigation_program.hpp"
 #include "marsokhod/occam_port/navigation/placement.hpp"
 
 #include <fmt/format.h>
@@ -54,7 +53,7 @@ std::vector<Seed> placement_seeds() {
 }
 
 void read_placement(const fs::path& input) {
-  const occam_port::ProgramShape shape = testing::navigation_program();
+  const occam_port::ProgramShape shape = occam_port::navigation_program_shape();
   // The shipped platform the file is for: onboard, or pc-card when the file says it is not
   // for onboard. A mutant naming neither is refused against pc-card.
   const emulator::PlatformSpec* platform = &shipped_platform("onboard");

@@ -19,6 +19,22 @@ extern char** environ;
 
 namespace marsokhod::testing {
 
+/// `path` in single quotes, for the argument strings run_marsokhod passes to the shell.
+inline std::string quoted(const std::filesystem::path& path) {
+  std::string text = "'";
+  text.append(path.string());
+  text.push_back('\'');
+  return text;
+}
+
+/// The whole file's bytes (empty when it cannot be read).
+inline std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
 /// What one run of the `marsokhod` binary produced.
 struct CommandResult {
   int exit_code = -1;

@@ -1,8 +1,7 @@
 // Placement files: the shipped placements, where a platform's default placement is, and every
 // error a placement file can hold, each with its file, line and key.
 
-#include "support/navigation_program.hpp"
-
+#include "marsokhod/occam_port/navigation/navigation_program.hpp"
 #include "marsokhod/occam_port/navigation/placement.hpp"
 
 #include <gtest/gtest.h>
@@ -19,7 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using emulator::PlatformSpec;
-using testing::navigation_program;
 
 const fs::path kPlatforms = fs::path(MARSOKHOD_SOURCE_DIR) / "platforms";
 
@@ -38,7 +36,7 @@ using Places = std::vector<std::pair<std::string, std::string>>;
 /// The shipped onboard split: acquire, features, matching on module0, the rest on module1.
 Places onboard_split() {
   Places places;
-  for (const std::string& process : navigation_program().processes)
+  for (const std::string& process : navigation_program_shape().processes)
     places.emplace_back(process, places.size() < 3 ? "module0" : "module1");
   return places;
 }
@@ -46,7 +44,7 @@ Places onboard_split() {
 /// The same split on the tests' bench platform: module0's processes on a, module1's on b.
 Places bench_split() {
   Places places;
-  for (const std::string& process : navigation_program().processes)
+  for (const std::string& process : navigation_program_shape().processes)
     places.emplace_back(process, places.size() < 3 ? "a" : "b");
   return places;
 }
@@ -105,7 +103,7 @@ protected:
   PlacementError expect_error(const std::string& text, const PlatformSpec& platform) {
     path_ = write("placement.toml", text);
     try {
-      load_placement(path_, platform, navigation_program());
+      load_placement(path_, platform, navigation_program_shape());
     } catch (const PlacementError& error) {
       EXPECT_EQ(error.file(), path_.string());
       EXPECT_NE(std::string(error.what()).find(path_.string()), std::string::npos) << error.what();
@@ -125,7 +123,7 @@ protected:
 
 TEST_F(PlacementFile, ShippedOnboardPlacementPutsStereoOnModule0AndTheRestOnModule1) {
   const fs::path file = kPlatforms / "placements" / "onboard.toml";
-  const Placement placement = load_placement(file, onboard(), navigation_program());
+  const Placement placement = load_placement(file, onboard(), navigation_program_shape());
   EXPECT_EQ(placement.source, file.string());
   EXPECT_EQ(placement.platform, "onboard");
   EXPECT_FALSE(placement.description.empty());
@@ -139,11 +137,11 @@ TEST_F(PlacementFile, ShippedOnboardPlacementPutsStereoOnModule0AndTheRestOnModu
 }
 
 TEST_F(PlacementFile, ShippedPcCardPlacementPutsEveryProcessOnTheCard) {
-  const Placement placement =
-      load_placement(kPlatforms / "placements" / "pc-card.toml", pc_card(), navigation_program());
+  const Placement placement = load_placement(kPlatforms / "placements" / "pc-card.toml", pc_card(),
+                                             navigation_program_shape());
   EXPECT_EQ(placement.platform, "pc-card");
   ASSERT_EQ(placement.places.size(), 9U);
-  for (const std::string& process : navigation_program().processes)
+  for (const std::string& process : navigation_program_shape().processes)
     EXPECT_EQ(placement.node_of(process), "card") << process;
 }
 
@@ -151,7 +149,7 @@ TEST_F(PlacementFile, DefaultPlacementFileIsThePlatformsNameInPlacementsBesideIt
   EXPECT_EQ(default_placement_file(onboard()), kPlatforms / "placements" / "onboard.toml");
   EXPECT_EQ(default_placement_file(pc_card()), kPlatforms / "placements" / "pc-card.toml");
   const Placement placement =
-      load_placement(default_placement_file(onboard()), onboard(), navigation_program());
+      load_placement(default_placement_file(onboard()), onboard(), navigation_program_shape());
   EXPECT_EQ(placement.node_of("matching"), "module0");
 }
 
@@ -172,15 +170,15 @@ TEST_F(PlacementFile, MissingDefaultPlacementIsAnErrorNamingThePathItLookedFor) 
 }
 
 TEST_F(PlacementFile, NodeOfAProcessNotPlacedIsOutOfRange) {
-  const Placement placement =
-      load_placement(kPlatforms / "placements" / "onboard.toml", onboard(), navigation_program());
+  const Placement placement = load_placement(kPlatforms / "placements" / "onboard.toml", onboard(),
+                                             navigation_program_shape());
   EXPECT_THROW((void)placement.node_of("steering"), std::out_of_range);
 }
 
 TEST_F(PlacementFile, BenchPlatformOfTheTestsTakesTheOnboardSplit) {
   Places places = bench_split();
   const fs::path file = write("placement.toml", placement_text("bench", places));
-  const Placement placement = load_placement(file, bench(), navigation_program());
+  const Placement placement = load_placement(file, bench(), navigation_program_shape());
   EXPECT_EQ(placement.node_of("range"), "b");
   EXPECT_EQ(placement.places[3].line, 14); // entry 3's node: 5 + 3 * 3
 }
@@ -391,6 +389,18 @@ TEST_F(PlacementFile, ChannelBetweenUnwiredNodesIsAnErrorAtTheLaterPlacedProcess
       << error.what();
 }
 
+TEST_F(PlacementFile, TwoChannelsOnOneLinkDirectionAreAnErrorAtTheLaterPlacedProcess) {
+  Places places = bench_split();
+  places[1].second = "b"; // features on b: images go from a to b, features from b back to a
+  const PlacementError error = expect_error(placement_text("bench", places), bench());
+  // disparity (matching on a -> range on b) is the second channel from a to b.
+  EXPECT_EQ(error.line(), 14); // entry 3 (range)'s node: 5 + 3 * 3
+  EXPECT_EQ(error.key(), "process[3].node");
+  EXPECT_TRUE(says(error, "channels 'images' and 'disparity' would both need the link from a to b"))
+      << error.what();
+  EXPECT_TRUE(says(error, "one channel on each direction of a link")) << error.what();
+}
+
 TEST_F(PlacementFile, ChannelOverABrokenWireIsAnErrorNamingTheWire) {
   Places places = bench_split();
   // motion placed first, drive later: the later one is reported, whichever end it is.
@@ -407,7 +417,7 @@ TEST_F(PlacementFile, ChannelOverABrokenWireIsAnErrorNamingTheWire) {
 
 TEST_F(PlacementFile, DeviceUseOnANodeWithoutADeviceWireIsAnError) {
   Places places; // every channel stays on c, but c has no wire to the frame store
-  for (const std::string& process : navigation_program().processes)
+  for (const std::string& process : navigation_program_shape().processes)
     places.emplace_back(process, "c");
   const PlacementError error = expect_error(placement_text("bench", places), bench());
   EXPECT_EQ(error.line(), 5);
@@ -443,7 +453,7 @@ TEST_F(PlacementFile, FolderInsteadOfAFileIsAnErrorNamingIt) {
   const fs::path folder = folder_ / "placement.toml";
   fs::create_directories(folder);
   try {
-    load_placement(folder, onboard(), navigation_program());
+    load_placement(folder, onboard(), navigation_program_shape());
     FAIL() << "no error";
   } catch (const PlacementError& error) {
     EXPECT_EQ(error.file(), folder.string());
@@ -454,7 +464,7 @@ TEST_F(PlacementFile, FolderInsteadOfAFileIsAnErrorNamingIt) {
 }
 
 TEST_F(PlacementFile, ShapeNamingAProcessItDoesNotListIsAProgramError) {
-  ProgramShape shape = navigation_program();
+  ProgramShape shape = navigation_program_shape();
   shape.channels.push_back({"steer", "drive", "steering"});
   EXPECT_THROW(load_placement(kPlatforms / "placements" / "onboard.toml", onboard(), shape),
                std::invalid_argument);

@@ -1,0 +1,139 @@
+// The emulated cycle's report: tables for people, JSON for scripts.
+
+#include "emulate_report.hpp"
+
+#include "marsokhod/emulator/kernel/time.hpp"
+
+#include <fmt/format.h>
+
+namespace marsokhod::apps {
+namespace {
+
+using occam_port::CycleEmulation;
+
+double seconds(emulator::Tick t) {
+  return emulator::to_seconds(t);
+}
+
+double fraction(emulator::Tick part, emulator::Tick whole) {
+  return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+}
+
+nlohmann::ordered_json plan_json(const occam_port::MemoryPlan& plan) {
+  nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
+  for (const occam_port::NodePlan& node : plan.nodes) {
+    nlohmann::ordered_json processes = nlohmann::ordered_json::array();
+    for (const occam_port::ProcessPlan& process : node.processes) {
+      nlohmann::ordered_json buffers = nlohmann::ordered_json::array();
+      for (const occam_port::PlannedBuffer& buffer : process.buffers)
+        buffers.push_back({{"what", buffer.what}, {"bytes", buffer.bytes}});
+      processes.push_back({{"process", process.process},
+                           {"code_bytes", process.code_bytes},
+                           {"workspace_bytes", process.workspace_bytes},
+                           {"buffer_bytes", process.buffer_bytes()},
+                           {"buffers", buffers}});
+    }
+    nodes.push_back({{"node", node.node},
+                     {"memory_bytes", node.memory_bytes},
+                     {"reserved_bytes", node.reserved_bytes},
+                     {"code_bytes", node.code_bytes},
+                     {"workspace_bytes", node.workspace_bytes},
+                     {"free_for_buffers", node.free_for_buffers()},
+                     {"buffer_bytes", node.buffer_bytes()},
+                     {"fits", node.fits()},
+                     {"processes", processes}});
+  }
+  return {{"image_width", plan.image_width},
+          {"image_height", plan.image_height},
+          {"band_rows", plan.band_rows},
+          {"fits", plan.fits()},
+          {"nodes", nodes}};
+}
+
+} // namespace
+
+std::string memory_fault_message(const occam_port::MemoryFaultFigures& fault) {
+  return fmt::format("memory fault on {}: process {} wanted {} B for {}; {} B were free, the "
+                     "largest free block {} B",
+                     fault.node, fault.process, fault.requested_bytes, fault.what, fault.free_bytes,
+                     fault.largest_free_block);
+}
+
+std::string emulation_tables(const CycleEmulation& run) {
+  std::string text = "stage        start s     end s  seconds\n";
+  for (const occam_port::StageFigures& stage : run.stages)
+    text += fmt::format("  {:<10} {:>8.3f}  {:>8.3f} {:>8.3f}\n", stage.name, seconds(stage.start),
+                        seconds(stage.end), seconds(stage.end - stage.start));
+  text += "process    node       cpu s    peak B\n";
+  for (const occam_port::ProcessFigures& process : run.processes)
+    text += fmt::format("  {:<10} {:<8} {:>7.3f} {:>9}\n", process.name, process.node,
+                        seconds(process.cpu), process.peak_bytes);
+  text += "node       busy    peak B of memory B\n";
+  for (const occam_port::NodeFigures& node : run.nodes)
+    text += node.powered ? fmt::format("  {:<8} {:>5.1f} % {:>9} of {}\n", node.name,
+                                       100.0 * fraction(node.busy, run.emulated), node.peak_bytes,
+                                       node.memory_bytes)
+                         : fmt::format("  {:<8} not powered\n", node.name);
+  text += "link direction                     bytes  busy s\n";
+  for (const occam_port::LinkFigures& link : run.links)
+    text += fmt::format("  {:<14} -> {:<14} {:>8} {:>7.3f}\n", link.from, link.to, link.bytes,
+                        seconds(link.busy));
+  return text + occam_port::describe(run.plan);
+}
+
+nlohmann::ordered_json emulation_json(const CycleEmulation& run, const EmulationSubject& subject,
+                                      double host_seconds,
+                                      const std::map<std::string, std::filesystem::path>& outputs) {
+  nlohmann::ordered_json json;
+  json["platform"] = subject.platform;
+  json["platform_file"] = subject.platform_file;
+  json["placement_file"] = subject.placement_file;
+  json["pair"] = subject.pair;
+  json["emulated_seconds"] = seconds(run.emulated);
+  json["host_seconds"] = host_seconds;
+  json["stages"] = nlohmann::ordered_json::array();
+  for (const occam_port::StageFigures& stage : run.stages)
+    json["stages"].push_back({{"name", stage.name},
+                              {"start_seconds", seconds(stage.start)},
+                              {"emulated_seconds", seconds(stage.end - stage.start)}});
+  json["processes"] = nlohmann::ordered_json::array();
+  for (const occam_port::ProcessFigures& p : run.processes)
+    json["processes"].push_back({{"name", p.name},
+                                 {"node", p.node},
+                                 {"cpu_seconds", seconds(p.cpu)},
+                                 {"peak_bytes", p.peak_bytes}});
+  json["nodes"] = nlohmann::ordered_json::array();
+  for (const occam_port::NodeFigures& n : run.nodes)
+    json["nodes"].push_back({{"name", n.name},
+                             {"powered", n.powered},
+                             {"busy_fraction", fraction(n.busy, run.emulated)},
+                             {"peak_bytes", n.peak_bytes},
+                             {"memory_bytes", n.memory_bytes}});
+  json["links"] = nlohmann::ordered_json::array();
+  for (const occam_port::LinkFigures& l : run.links)
+    json["links"].push_back(
+        {{"from", l.from}, {"to", l.to}, {"bytes", l.bytes}, {"busy_seconds", seconds(l.busy)}});
+  json["memory_plan"] = plan_json(run.plan);
+  json["memory_fault"] = nullptr;
+  if (run.memory_fault)
+    json["memory_fault"] = {{"node", run.memory_fault->node},
+                            {"process", run.memory_fault->process},
+                            {"requested_bytes", run.memory_fault->requested_bytes},
+                            {"what", run.memory_fault->what}};
+  json["found"] = run.result && run.result->found();
+  if (run.result && !run.result->found())
+    json["reason"] = run.result->reason();
+  nlohmann::ordered_json work = nlohmann::ordered_json::object();
+  for (std::size_t k = 0; k < nav::kWorkKinds; ++k)
+    work[std::string(nav::to_string(static_cast<nav::Work>(k)))] =
+        run.work.count(static_cast<nav::Work>(k));
+  json["work"] = work;
+  json["context_switches"] = run.context_switches;
+  nlohmann::ordered_json files = nlohmann::ordered_json::object();
+  for (const auto& [key, path] : outputs)
+    files[key] = path.string();
+  json["outputs"] = files;
+  return json;
+}
+
+} // namespace marsokhod::apps

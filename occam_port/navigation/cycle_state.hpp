@@ -1,0 +1,96 @@
+// CycleState and ProcessContext: what the navigation program's processes share and carry.
+#pragma once
+
+// The state of one emulated cycle as its processes see it (private to the navigation room):
+// the constants compiled into the program (image size, rig, options), the channels, the
+// device links, and the host's side: the products read out of the nodes' memories and the
+// figures of the run.
+
+#include "marsokhod/emulator/kernel/kernel.hpp"
+#include "marsokhod/emulator/node/node.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/occam_port/navigation/block_channel.hpp"
+#include "marsokhod/occam_port/navigation/emulated_meter.hpp"
+#include "marsokhod/occam_port/navigation/navigation_program.hpp"
+
+#include <map>
+#include <memory_resource>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace marsokhod::emulator {
+class LinkPort;
+} // namespace marsokhod::emulator
+
+namespace marsokhod::occam_port::detail {
+
+/// The program's channels, one per arrow of its process diagram.
+struct CycleChannels {
+  BlockChannel images{"images"};
+  BlockChannel features{"features"};
+  BlockChannel disparity{"disparity"};
+  BlockChannel terrain{"terrain"};
+  BlockChannel zones{"zones"};
+  BlockChannel path{"path"};
+  BlockChannel commands{"commands"};
+  BlockChannel plan_out{"plan_out"};
+  BlockChannel wheels{"wheels"};
+
+  /// The channel of a ProgramShape entry; nullptr for an unknown name.
+  BlockChannel* named(std::string_view name);
+};
+
+struct CycleState {
+  int width = 0;
+  int height = 0;
+  const imaging::StereoRig* rig = nullptr;
+  nav::NavigationOptions options;
+  emulator::Kernel* kernel = nullptr;
+  CycleChannels channels;
+  /// Each node's link to the devices (frame store, host), if it has one.
+  std::map<std::string, emulator::LinkPort*> device_ports;
+
+  // The host's side.
+  nav::NavigationResult products;
+  nav::CountingMeter work;
+  std::vector<StageFigures> stages;
+  std::optional<MemoryFaultFigures> fault;
+  std::optional<std::string> error;
+  std::vector<std::vector<std::byte>> telemetry;
+};
+
+/// One running process: its node, its meter, and what it is allocating (for fault messages).
+class ProcessContext {
+public:
+  ProcessContext(CycleState& cycle, emulator::Node& node, std::string name);
+
+  CycleState& cycle() { return *cycle_; }
+  emulator::Node& node() { return *node_; }
+  const std::string& name() const { return name_; }
+  /// The meter the nav kernels report to (through the virtual call: they are compiled once).
+  nav::DynamicMeter& meter() { return meter_; }
+  const EmulatedMeter& emulated_meter() const { return meter_; }
+  std::pmr::memory_resource* memory() { return &node_->memory(); }
+  /// Names the buffer or kernel the next allocations are for.
+  void doing(std::string what) { what_ = std::move(what); }
+  const std::string& what() const { return what_; }
+  /// The stage starts (its input has arrived) / ends.
+  void start_stage();
+  void end_stage();
+  /// The node's link to the devices; std::logic_error without one (the placement checks it).
+  emulator::LinkPort& device_port();
+
+private:
+  CycleState* cycle_;
+  emulator::Node* node_;
+  std::string name_;
+  EmulatedMeter meter_;
+  std::string what_;
+  std::optional<emulator::Tick> started_;
+};
+
+/// The body of every process of the program, by name (ProgramShape order).
+void run_process(ProcessContext& context);
+
+} // namespace marsokhod::occam_port::detail

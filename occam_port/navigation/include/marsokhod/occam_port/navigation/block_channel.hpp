@@ -1,0 +1,59 @@
+// BlockChannel: a channel of the navigation program carrying blocks of bytes, in memory or
+// over a link.
+#pragma once
+
+#include "marsokhod/occam_port/channel.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace marsokhod::emulator {
+class LinkPort;
+} // namespace marsokhod::emulator
+
+namespace marsokhod::occam_port {
+
+/// One channel between two processes of the navigation program, carrying blocks of bytes as an
+/// occam channel of counted arrays does (`CHAN OF [n]BYTE`): synchronous, one sender, one
+/// receiver, each block received into a buffer of the length the protocol says. Between
+/// processes of one node it is a channel in memory, charged as the transputer's in/out
+/// (2w + 19 cycles for w words, each side); placed on a link, the link's DMA engines move the
+/// bytes and each side pays only the instruction's base. Counts the bytes it carried.
+class BlockChannel {
+public:
+  explicit BlockChannel(std::string name);
+
+  const std::string& name() const { return channel_.name(); }
+  /// Carries the channel over the link whose ends are `sender` (the sending node's port) and
+  /// `receiver` (the receiving node's).
+  void place_on_link(emulator::LinkPort& sender, emulator::LinkPort& receiver);
+  bool external() const { return sender_ != nullptr; }
+
+  /// `c ! block`: returns once the receiver has the bytes.
+  void send(std::span<const std::byte> block);
+  /// `c ? block`: the block must have the sender's length (std::logic_error otherwise: the two
+  /// sides of the protocol disagree).
+  void receive(std::span<std::byte> block);
+
+  std::uint64_t bytes_carried() const { return bytes_; }
+  std::uint64_t blocks_carried() const { return blocks_; }
+
+private:
+  /// An internal channel whose messages are block descriptors: the copy moves the bytes.
+  class Internal : public ChanBase {
+  public:
+    using ChanBase::ChanBase;
+    void send(std::span<const std::byte> block);
+    void receive(std::span<std::byte> block);
+  };
+
+  Internal channel_;
+  emulator::LinkPort* sender_ = nullptr;
+  emulator::LinkPort* receiver_ = nullptr;
+  std::uint64_t bytes_ = 0;
+  std::uint64_t blocks_ = 0;
+};
+
+} // namespace marsokhod::occam_port

@@ -1,0 +1,118 @@
+// The Marsokhod navigation program as OCCAM processes on an emulated transputer network.
+#pragma once
+
+#include "marsokhod/emulator/kernel/time.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/emulator/trace/trace_sink.hpp"
+#include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/nav/work/work.hpp"
+#include "marsokhod/occam_port/navigation/memory_plan.hpp"
+#include "marsokhod/occam_port/navigation/placement.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace marsokhod::occam_port {
+
+/// The processes, channels and device uses of the navigation program, in the order the
+/// program starts them; what a placement file is checked against.
+const ProgramShape& navigation_program_shape();
+
+/// What one cycle is run on: the pair (the reference left image and the right one, of the
+/// rig's size), the rig and the options of `marsokhod nav`.
+struct CycleInput {
+  imaging::ImageView<const std::uint8_t> left;
+  imaging::ImageView<const std::uint8_t> right;
+  const imaging::StereoRig* rig = nullptr;
+  nav::NavigationOptions options;
+};
+
+/// Where the cycle runs: a platform, which process runs on which node, and what-if changes.
+struct CycleSetup {
+  const emulator::PlatformSpec* platform = nullptr;
+  const Placement* placement = nullptr;
+  /// Replaces every node's external memory (what-if runs, `emulate --external-kb`).
+  std::optional<std::size_t> external_bytes;
+  /// Receives the run's trace when set.
+  emulator::TraceSink* trace = nullptr;
+};
+
+/// One stage of the cycle: from the moment its process had its input to the moment it had
+/// handed on its output.
+struct StageFigures {
+  std::string name;
+  emulator::Tick start = 0;
+  emulator::Tick end = 0;
+};
+
+/// One process: where it ran, the CPU time it held and its memory high-water mark.
+struct ProcessFigures {
+  std::string name;
+  std::string node;
+  emulator::Tick cpu = 0;
+  std::size_t peak_bytes = 0;
+};
+
+/// One node: how busy its CPU was over the cycle and its memory high-water mark.
+struct NodeFigures {
+  std::string name;
+  bool powered = true;
+  emulator::Tick busy = 0;
+  std::size_t peak_bytes = 0;
+  std::size_t memory_bytes = 0; ///< on-chip plus external
+};
+
+/// One direction of a link that carried something.
+struct LinkFigures {
+  std::string from; ///< "module0.link0"
+  std::string to;
+  std::uint64_t bytes = 0;
+  emulator::Tick busy = 0;
+};
+
+/// A node's memory ran out: who asked, for what and how much.
+struct MemoryFaultFigures {
+  std::string node;
+  std::string process;
+  std::size_t requested_bytes = 0;
+  std::string what; ///< "disparity, 128 rows x 128 px x 4 B"
+  std::size_t free_bytes = 0;
+  std::size_t largest_free_block = 0;
+};
+
+/// Everything one emulated cycle produced and measured.
+struct CycleEmulation {
+  /// From the cycle's start to the last process's end (or to the fault).
+  emulator::Tick emulated = 0;
+  std::vector<StageFigures> stages;
+  std::vector<ProcessFigures> processes;
+  std::vector<NodeFigures> nodes;
+  std::vector<LinkFigures> links;
+  MemoryPlan plan;
+  std::optional<MemoryFaultFigures> memory_fault;
+  /// The cycle's products, read out of the nodes' memories as a debugger would (not charged);
+  /// absent after a memory fault.
+  std::optional<nav::NavigationResult> result;
+  /// Work the nav kernels reported inside the emulation.
+  nav::CountingMeter work;
+  /// What reached the host or ground link: the path and the drive commands, then the wheel
+  /// commands the motion scheme gave, each upload as the device received it.
+  std::vector<std::vector<std::byte>> telemetry;
+  std::uint64_t context_switches = 0;
+};
+
+/// Runs one navigation cycle on the emulated network: image acquisition from the frame store
+/// (or the host) over a link, features and pyramid, matching layer by layer, range and
+/// elevation, prohibited zones, safest path, drive commands, the motion scheme at high
+/// priority and telemetry, each an OCCAM process on the node its placement names, their buffers
+/// from that node's memory. A memory fault ends the run cleanly (memory_fault set). Throws
+/// std::invalid_argument for images that do not fit the rig or bad options; the placement must
+/// come from load_placement for this platform and navigation_program_shape().
+CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetup& setup);
+
+} // namespace marsokhod::occam_port

@@ -1,0 +1,147 @@
+// The memory plan: code, workspaces and the buffers each process keeps, node by node.
+
+#include "marsokhod/occam_port/navigation/memory_plan.hpp"
+
+#include "navigation/program_processes.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace marsokhod::occam_port {
+namespace {
+
+struct Geometry {
+  int width;
+  int height;
+  int levels;
+
+  std::size_t pixels() const {
+    return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  }
+  // The halved layers above the original: floor(w / 2^l) x floor(h / 2^l) each.
+  std::size_t pyramid_pixels() const {
+    std::size_t total = 0;
+    for (int level = 1; level < levels; ++level)
+      total += static_cast<std::size_t>(width >> level) * static_cast<std::size_t>(height >> level);
+    return total;
+  }
+};
+
+PlannedBuffer image(std::string_view what, const Geometry& g, int bytes_per_pixel) {
+  return {buffer_name(what, g.height, g.width, bytes_per_pixel),
+          g.pixels() * static_cast<std::size_t>(bytes_per_pixel)};
+}
+
+// What each process holds at its peak in the one-band programme: the images and maps it
+// receives, keeps and hands on.
+std::vector<PlannedBuffer> buffers_of(std::string_view process, const Geometry& g) {
+  if (process == "acquire")
+    return {image("camera image", g, 1)};
+  if (process == "features")
+    return {image("left image", g, 1),
+            image("right image", g, 1),
+            {fmt::format("pyramid layers 1..{}, both eyes", g.levels - 1), 2 * g.pyramid_pixels()},
+            image("census features, left", g, 1),
+            image("census features, right", g, 1)};
+  if (process == "matching")
+    return {image("left layer", g, 1),
+            image("census features, left", g, 1),
+            image("census features, right", g, 1),
+            {"coarser layer's disparity and validity", g.pixels() / 4 * 5},
+            image("disparity", g, 4),
+            image("validity", g, 1),
+            image("smoothed disparity", g, 4)};
+  if (process == "range")
+    return {image("seeable disparity", g, 4), image("validity", g, 1),
+            image("terrain points (forward, left, elevation, range)", g, 16)};
+  if (process == "zones")
+    return {image("terrain points", g, 16), image("validity", g, 1), image("zone map", g, 1)};
+  if (process == "path")
+    return {image("terrain points", g, 16), image("zone map", g, 1), image("row sweep costs", g, 4),
+            image("row sweep steps", g, 1)};
+  if (process == "drive")
+    return {{buffer_name("ground path", g.height, 1, 16), static_cast<std::size_t>(g.height) * 16}};
+  return {};
+}
+
+} // namespace
+
+std::size_t ProcessPlan::buffer_bytes() const {
+  return std::accumulate(
+      buffers.begin(), buffers.end(), std::size_t{0},
+      [](std::size_t sum, const PlannedBuffer& b) { return sum + b.bytes; });
+}
+
+std::size_t NodePlan::free_for_buffers() const {
+  const std::size_t used = reserved_bytes + code_bytes + workspace_bytes;
+  return memory_bytes > used ? memory_bytes - used : 0;
+}
+
+// The cycle's stages run one after another, but each hands its output on while the next one
+// receives it: at the hand-over both hold their buffers. The node's peak is the largest such
+// pair (or the one process, if it is alone).
+std::size_t NodePlan::buffer_bytes() const {
+  std::size_t peak = 0;
+  for (std::size_t i = 0; i < processes.size(); ++i) {
+    const std::size_t next = i + 1 < processes.size() ? processes[i + 1].buffer_bytes() : 0;
+    peak = std::max(peak, processes[i].buffer_bytes() + next);
+  }
+  return peak;
+}
+
+bool MemoryPlan::fits() const {
+  return std::all_of(
+      nodes.begin(), nodes.end(), [](const NodePlan& n) { return n.fits(); });
+}
+
+std::string buffer_name(std::string_view what, int rows, int columns, int bytes_per_element) {
+  return fmt::format("{}, {} rows x {} px x {} B", what, rows, columns, bytes_per_element);
+}
+
+MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& placement,
+                       int width, int height, int pyramid_levels,
+                       std::optional<std::size_t> external_bytes) {
+  const Geometry geometry{width, height, pyramid_levels};
+  MemoryPlan plan{width, height, height, {}};
+  for (const emulator::NodeSpec& node : platform.nodes) {
+    NodePlan node_plan;
+    node_plan.node = node.name;
+    node_plan.memory_bytes =
+        node.memory.on_chip_bytes + external_bytes.value_or(node.memory.external_bytes);
+    node_plan.reserved_bytes = node.memory.reserved_on_chip_bytes;
+    for (const detail::ProcessSpec& process : detail::program_processes()) {
+      if (placement.node_of(process.name) != node.name)
+        continue;
+      node_plan.code_bytes += process.code_bytes;
+      node_plan.workspace_bytes += process.workspace_bytes;
+      node_plan.processes.push_back({std::string(process.name), process.code_bytes,
+                                     process.workspace_bytes, buffers_of(process.name, geometry)});
+    }
+    if (!node_plan.processes.empty())
+      plan.nodes.push_back(std::move(node_plan));
+  }
+  return plan;
+}
+
+std::string describe(const MemoryPlan& plan) {
+  std::string text = fmt::format("memory plan for {}x{} images, bands of {} rows\n",
+                                 plan.image_width, plan.image_height, plan.band_rows);
+  for (const NodePlan& node : plan.nodes) {
+    text += fmt::format("  {}: {} B = {} reserved + {} code + {} workspaces + {} free for "
+                        "buffers; peak of buffers {} B: {}\n",
+                        node.node, node.memory_bytes, node.reserved_bytes, node.code_bytes,
+                        node.workspace_bytes, node.free_for_buffers(), node.buffer_bytes(),
+                        node.fits() ? "fit" : "DO NOT FIT");
+    for (const ProcessPlan& process : node.processes) {
+      text += fmt::format("    {:<10} {:>7} B", process.process, process.buffer_bytes());
+      for (const PlannedBuffer& buffer : process.buffers)
+        text += fmt::format("  [{}]", buffer.what);
+      text += '\n';
+    }
+  }
+  return text;
+}
+
+} // namespace marsokhod::occam_port

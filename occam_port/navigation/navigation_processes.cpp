@@ -1,0 +1,339 @@
+// The navigation program's processes, from image acquisition to telemetry.
+
+#include "navigation/cycle_messages.hpp"
+#include "navigation/cycle_state.hpp"
+
+#include "marsokhod/emulator/links/link.hpp"
+#include "marsokhod/emulator/links/link_frame_store.hpp"
+#include "marsokhod/nav/cycle/motion_scheme.hpp"
+#include "marsokhod/nav/features/layer_features.hpp"
+#include "marsokhod/nav/features/pair_pyramid.hpp"
+#include "marsokhod/nav/stereo/layered_matching.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cstring>
+#include <stdexcept>
+
+namespace marsokhod::occam_port::detail {
+namespace {
+
+using U8Image = imaging::Image<std::uint8_t>;
+using FloatImage = imaging::Image<float>;
+
+/// The plan's fixed part, as the path process hands it to drive and drive to telemetry.
+struct PlanHeader {
+  std::int32_t found = 0;
+  nav::PixelPoint start;
+  nav::PixelPoint target;
+  double cost = 0.0;
+  double score = 0.0;
+};
+
+std::string image_what(std::string_view what, int width, int height, int bytes) {
+  return buffer_name(what, height, width, bytes);
+}
+
+U8Image receive_bytes(ProcessContext& c, BlockChannel& channel, std::string_view what, int width,
+                      int height) {
+  c.doing(image_what(what, width, height, 1));
+  return receive_image<std::uint8_t>(channel, width, height, c.memory());
+}
+
+FloatImage receive_floats(ProcessContext& c, BlockChannel& channel, std::string_view what) {
+  const CycleState& s = c.cycle();
+  c.doing(image_what(what, s.width, s.height, 4));
+  return receive_image<float>(channel, s.width, s.height, c.memory());
+}
+
+void send_terrain(BlockChannel& channel, const nav::TerrainPoints& terrain) {
+  for (const FloatImage* plane :
+       {&terrain.forward, &terrain.left, &terrain.elevation, &terrain.range})
+    send_image<float>(channel, plane->view());
+  send_value(channel, terrain.known_pixels);
+}
+
+nav::TerrainPoints receive_terrain(ProcessContext& c, BlockChannel& channel) {
+  nav::TerrainPoints terrain;
+  terrain.forward = receive_floats(c, channel, "terrain forward");
+  terrain.left = receive_floats(c, channel, "terrain left");
+  terrain.elevation = receive_floats(c, channel, "terrain elevation");
+  terrain.range = receive_floats(c, channel, "terrain range");
+  terrain.known_pixels = receive_value<std::uint64_t>(channel);
+  return terrain;
+}
+
+void send_features(BlockChannel& channel, const nav::LayerFeatures& features) {
+  if (features.kind == nav::FeatureKind::census3x3) {
+    send_image<std::uint8_t>(channel, features.bytes.view());
+    return;
+  }
+  send_image<std::uint32_t>(channel, features.words.view());
+}
+
+nav::LayerFeatures receive_features(ProcessContext& c, BlockChannel& channel, std::string_view eye,
+                                    int width, int height) {
+  const nav::FeatureKind kind = c.cycle().options.stereo.feature;
+  nav::LayerFeatures features{kind, U8Image(c.memory()), imaging::Image<std::uint32_t>(c.memory())};
+  if (kind == nav::FeatureKind::census3x3) {
+    features.bytes =
+        receive_bytes(c, channel, fmt::format("census features, {}", eye), width, height);
+    return features;
+  }
+  c.doing(image_what(fmt::format("features, {}", eye), width, height, 4));
+  features.words = receive_image<std::uint32_t>(channel, width, height, c.memory());
+  return features;
+}
+
+// The cycle's stereo options, worked out on the node as the program would at its start.
+nav::StereoOptions stereo_options(ProcessContext& c, std::pmr::vector<std::int16_t>& unseen) {
+  c.doing(fmt::format("unseen columns, {} rows x 2 B", c.cycle().height));
+  return nav::rover_stereo_options(*c.cycle().rig, c.cycle().options, unseen);
+}
+
+void upload(ProcessContext& c, std::span<const std::byte> payload) {
+  emulator::LinkPort& port = c.device_port();
+  std::array<std::byte, 5> header{emulator::FrameStore::kUploadRequest};
+  for (std::size_t i = 0; i < 4; ++i)
+    header[1 + i] = std::byte(static_cast<unsigned char>(payload.size() >> (8 * i)));
+  c.node().execute(emulator::Instruction::out);
+  port.output(header);
+  c.node().execute(emulator::Instruction::out);
+  port.output(payload);
+}
+
+// ---- the processes ----
+
+void acquire(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  c.start_stage();
+  emulator::LinkPort& port = c.device_port();
+  for (int camera = 0; camera < 2; ++camera) {
+    c.doing(image_what(camera == 0 ? "left image" : "right image", s.width, s.height, 1));
+    U8Image image(s.width, s.height, 1, 0, c.memory());
+    const std::byte request{static_cast<unsigned char>(camera)};
+    c.node().execute(emulator::Instruction::out);
+    port.output(std::span(&request, 1));
+    c.node().execute(emulator::Instruction::in);
+    port.input(std::as_writable_bytes(std::span(image.data(), image.size())));
+    send_image<std::uint8_t>(s.channels.images, image.view());
+  }
+}
+
+void features(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const U8Image left = receive_bytes(c, s.channels.images, "left image", s.width, s.height);
+  c.start_stage();
+  const U8Image right = receive_bytes(c, s.channels.images, "right image", s.width, s.height);
+  const std::optional<std::string> uniform = nav::uniform_pair_reason(left, right);
+  send_text(s.channels.features, uniform.value_or(""));
+  if (uniform) {
+    send_image<std::uint8_t>(s.channels.features, left.view());
+    return;
+  }
+  std::pmr::vector<std::int16_t> unseen(c.memory());
+  const nav::StereoOptions options = stereo_options(c, unseen);
+  const int levels = nav::pyramid_levels_for(s.width, s.height, options);
+  c.doing(fmt::format("pyramid layers 1..{}, both eyes", levels - 1));
+  const nav::PairPyramid pyramid(left, right, levels, c.meter(), c.memory());
+  for (int level = levels - 1; level >= 0; --level) {
+    const auto left_layer = pyramid.layer(level, imaging::Eye::left);
+    c.doing(image_what(fmt::format("layer {} features", level), left_layer.width(),
+                       left_layer.height(), 1));
+    const nav::LayerFeatures left_features =
+        nav::layer_features(left_layer, options.feature, c.meter(), c.memory());
+    const nav::LayerFeatures right_features = nav::layer_features(
+        pyramid.layer(level, imaging::Eye::right), options.feature, c.meter(), c.memory());
+    send_image<std::uint8_t>(s.channels.features, left_layer);
+    send_features(s.channels.features, left_features);
+    send_features(s.channels.features, right_features);
+  }
+}
+
+nav::StereoResult match_layers(ProcessContext& c, const nav::StereoOptions& options,
+                               U8Image& left) {
+  CycleState& s = c.cycle();
+  nav::LayeredMatching matching(s.width, s.height, options, c.memory());
+  for (int level = matching.levels() - 1; level >= 0; --level) {
+    const int width = s.width >> level;
+    const int height = s.height >> level;
+    U8Image layer = receive_bytes(c, s.channels.features, fmt::format("layer {} left image", level),
+                                  width, height);
+    const nav::LayerFeatures left_features =
+        receive_features(c, s.channels.features, "left", width, height);
+    const nav::LayerFeatures right_features =
+        receive_features(c, s.channels.features, "right", width, height);
+    if (level == matching.levels() - 1)
+      c.start_stage();
+    c.doing(fmt::format("matching layer {} ({}x{}): cost rows, layer disparity and validity", level,
+                        width, height));
+    if (!matching.finished())
+      matching.match_layer(layer, left_features, right_features, c.meter());
+    if (level == 0)
+      left = std::move(layer);
+  }
+  return matching.take_result();
+}
+
+void matching(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const std::string uniform = receive_text(s.channels.features, c.memory());
+  std::pmr::vector<std::int16_t> unseen(c.memory());
+  const nav::StereoOptions options = stereo_options(c, unseen);
+  U8Image left(c.memory());
+  nav::StereoResult stereo(nav::StereoResult{FloatImage(c.memory()),
+                                             U8Image(c.memory()),
+                                             0,
+                                             std::pmr::vector<nav::StereoLayerStats>(c.memory()),
+                                             {}});
+  if (!uniform.empty()) {
+    left = receive_bytes(c, s.channels.features, "left image", s.width, s.height);
+    c.start_stage();
+    c.doing(image_what("unmatched disparity and validity", s.width, s.height, 5));
+    stereo = nav::unmatched_stereo(s.width, s.height, uniform, c.memory());
+  } else {
+    stereo = match_layers(c, options, left);
+  }
+  c.doing(image_what("seeable disparity and texture mask", s.width, s.height, 5));
+  const FloatImage seeable =
+      nav::seeable_disparity(left, stereo.disparity, *s.rig, s.options, c.memory());
+  s.products.stereo = stereo;
+  send_text(s.channels.disparity, stereo.reason);
+  send_image<float>(s.channels.disparity, seeable.view());
+  send_image<std::uint8_t>(s.channels.disparity, stereo.valid.view());
+}
+
+void range(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const std::string reason = receive_text(s.channels.disparity, c.memory());
+  const FloatImage seeable = receive_floats(c, s.channels.disparity, "seeable disparity");
+  c.start_stage();
+  const U8Image valid = receive_bytes(c, s.channels.disparity, "validity", s.width, s.height);
+  c.doing(image_what("terrain points (forward, left, elevation, range)", s.width, s.height, 16));
+  const nav::TerrainPoints terrain =
+      nav::reconstruct_terrain(seeable, *s.rig, s.options.attitude, c.meter(), c.memory());
+  s.products.terrain = terrain;
+  send_text(s.channels.terrain, reason);
+  send_terrain(s.channels.terrain, terrain);
+  send_image<std::uint8_t>(s.channels.terrain, valid.view());
+}
+
+void zones(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const std::string reason = receive_text(s.channels.terrain, c.memory());
+  const nav::TerrainPoints terrain = receive_terrain(c, s.channels.terrain);
+  c.start_stage();
+  const U8Image valid = receive_bytes(c, s.channels.terrain, "validity", s.width, s.height);
+  c.doing("prohibited zones: ground grid and zone map");
+  const nav::ZoneMap zones =
+      nav::find_zones(terrain, valid, s.options.zones, c.meter(), c.memory());
+  s.products.zones = zones;
+  send_text(s.channels.zones, reason);
+  send_terrain(s.channels.zones, terrain);
+  send_image<std::uint8_t>(s.channels.zones, zones.zone.view());
+  send_value(s.channels.zones, zones.counts);
+}
+
+void path(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const std::string reason = receive_text(s.channels.zones, c.memory());
+  const nav::TerrainPoints terrain = receive_terrain(c, s.channels.zones);
+  c.start_stage();
+  nav::ZoneMap zones;
+  zones.zone = receive_bytes(c, s.channels.zones, "zone map", s.width, s.height);
+  zones.counts = receive_value<decltype(zones.counts)>(s.channels.zones);
+  c.doing("safest path: row sweep costs and steps");
+  nav::PathPlan plan =
+      nav::plan_cycle_path(terrain, zones, s.options.planner, c.meter(), c.memory());
+  nav::explain_stereo_failure(reason, plan);
+  std::pmr::vector<nav::GroundPoint> ground(c.memory());
+  if (plan.found) {
+    c.doing(fmt::format("ground path, {} points x 16 B", plan.pixels.size()));
+    ground = nav::ground_path(terrain, plan.pixels, c.memory());
+  }
+  s.products.plan = plan;
+  send_value(s.channels.path,
+             PlanHeader{plan.found ? 1 : 0, plan.start, plan.target, plan.cost, plan.score});
+  send_text(s.channels.path, plan.reason);
+  send_list<nav::PixelPoint>(s.channels.path, plan.pixels);
+  send_list<nav::GroundPoint>(s.channels.path, ground);
+}
+
+void drive(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const auto header = receive_value<PlanHeader>(s.channels.path);
+  c.start_stage();
+  const std::string reason = receive_text(s.channels.path, c.memory());
+  c.doing("path pixels");
+  const auto pixels = receive_list<nav::PixelPoint>(s.channels.path, c.memory());
+  c.doing("ground path");
+  const auto ground = receive_list<nav::GroundPoint>(s.channels.path, c.memory());
+  nav::DrivePlan plan{std::pmr::vector<nav::GroundPoint>(c.memory()),
+                      std::pmr::vector<nav::GroundPoint>(c.memory()),
+                      0.0,
+                      std::pmr::vector<double>(c.memory()),
+                      0.0,
+                      std::pmr::vector<nav::DriveCommand>(c.memory())};
+  if (header.found != 0) {
+    c.doing("drive plan: polyline and commands");
+    plan = nav::plan_drive(ground, s.options.drive, c.memory());
+  }
+  s.products.drive = plan;
+  send_value(s.channels.commands, header.found);
+  send_list<nav::DriveCommand>(s.channels.commands, plan.commands);
+  send_value(s.channels.plan_out, header);
+  send_list<nav::PixelPoint>(s.channels.plan_out, pixels);
+  send_list<nav::DriveCommand>(s.channels.plan_out, plan.commands);
+}
+
+// The paper's motion scheme at high priority: it takes the cycle's answer and tells the
+// wheels what to do, before any low-priority work on its node goes on.
+void motion(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const auto found = receive_value<std::int32_t>(s.channels.commands);
+  c.start_stage();
+  c.doing("drive commands");
+  const auto commands = receive_list<nav::DriveCommand>(s.channels.commands, c.memory());
+  const nav::MotionStep step = nav::next_motion_step(
+      nav::MotionStatus{}, nav::MotionEvent{found != 0 ? nav::MotionEventKind::path_found
+                                                       : nav::MotionEventKind::no_path,
+                                            nav::Side::left});
+  std::pmr::vector<nav::DriveCommand> wheels(c.memory());
+  if (step.action.turn_deg != 0.0)
+    wheels.push_back({step.action.turn_deg, 0.0});
+  if (step.action.then == nav::MotionAction::Then::drive)
+    wheels.insert(wheels.end(), commands.begin(), commands.end());
+  send_value(s.channels.wheels, static_cast<std::int32_t>(step.status.state));
+  send_list<nav::DriveCommand>(s.channels.wheels, wheels);
+}
+
+void telemetry(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const auto header = receive_value<PlanHeader>(s.channels.plan_out);
+  c.start_stage();
+  c.doing("telemetry: path pixels");
+  const auto pixels = receive_list<nav::PixelPoint>(s.channels.plan_out, c.memory());
+  c.doing("telemetry: drive commands");
+  const auto commands = receive_list<nav::DriveCommand>(s.channels.plan_out, c.memory());
+  upload(c, bytes_of(header));
+  upload(c, std::as_bytes(std::span(pixels)));
+  upload(c, std::as_bytes(std::span(commands)));
+  const auto state = receive_value<std::int32_t>(s.channels.wheels);
+  c.doing("telemetry: wheel commands");
+  const auto wheels = receive_list<nav::DriveCommand>(s.channels.wheels, c.memory());
+  upload(c, bytes_of(state));
+  upload(c, std::as_bytes(std::span(wheels)));
+}
+
+} // namespace
+
+void run_process(ProcessContext& context) {
+  static const std::map<std::string_view, void (*)(ProcessContext&)> bodies{
+      {"acquire", acquire}, {"features", features}, {"matching", matching},
+      {"range", range},     {"zones", zones},       {"path", path},
+      {"drive", drive},     {"motion", motion},     {"telemetry", telemetry}};
+  bodies.at(context.name())(context);
+}
+
+} // namespace marsokhod::occam_port::detail

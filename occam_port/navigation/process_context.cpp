@@ -1,0 +1,48 @@
+// A running process of the navigation program: its meter, its stage and its device link.
+
+#include "navigation/cycle_state.hpp"
+
+#include <stdexcept>
+
+namespace marsokhod::occam_port::detail {
+
+BlockChannel* CycleChannels::named(std::string_view name) {
+  for (BlockChannel* channel :
+       {&images, &features, &disparity, &terrain, &zones, &path, &commands, &plan_out, &wheels})
+    if (channel->name() == name)
+      return channel;
+  return nullptr;
+}
+
+// A kernel's buffers are image-sized: far beyond the 4 KB on chip, they go wherever the node
+// places data, which is external memory unless a what-if run says otherwise.
+ProcessContext::ProcessContext(CycleState& cycle, emulator::Node& node, std::string name)
+    : cycle_(&cycle), node_(&node), name_(std::move(name)),
+      meter_(node, node.memory().default_placement() != emulator::Placement::on_chip) {}
+
+void ProcessContext::start_stage() {
+  if (!started_)
+    started_ = node_->kernel().now();
+}
+
+// A track per stage, so that overlapping stages of one node never have to nest.
+void ProcessContext::end_stage() {
+  const emulator::Tick now = node_->kernel().now();
+  const emulator::Tick start = started_.value_or(now);
+  cycle_->stages.push_back({name_, start, now});
+  if (emulator::TraceSink* sink = node_->kernel().trace()) {
+    const emulator::TrackId track = sink->track(node_->name(), "stage " + name_);
+    sink->begin_slice(track, start, name_);
+    sink->end_slice(track, now);
+  }
+}
+
+emulator::LinkPort& ProcessContext::device_port() {
+  const auto found = cycle_->device_ports.find(node_->name());
+  if (found == cycle_->device_ports.end() || found->second == nullptr)
+    throw std::logic_error("process " + name_ + ": node " + node_->name() +
+                           " has no link to a device");
+  return *found->second;
+}
+
+} // namespace marsokhod::occam_port::detail

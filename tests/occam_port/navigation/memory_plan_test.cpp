@@ -1,0 +1,85 @@
+// The memory plan: each process's buffers from the image size, each node's code, workspaces,
+// free memory and peak, worked out by hand.
+
+#include "marsokhod/occam_port/navigation/memory_plan.hpp"
+#include "marsokhod/occam_port/navigation/navigation_program.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace marsokhod::occam_port {
+namespace {
+
+const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+
+struct Shipped {
+  emulator::PlatformSpec platform;
+  Placement placement;
+};
+
+Shipped shipped(const std::string& name) {
+  emulator::PlatformSpec platform = emulator::load_platform(kPlatforms / (name + ".toml"));
+  Placement placement =
+      load_placement(default_placement_file(platform), platform, navigation_program_shape());
+  return {std::move(platform), std::move(placement)};
+}
+
+const ProcessPlan& process(const NodePlan& node, const std::string& name) {
+  for (const ProcessPlan& p : node.processes)
+    if (p.process == name)
+      return p;
+  throw std::out_of_range(name);
+}
+
+TEST(MemoryPlan, BuffersFollowTheImageSizeAndThePyramid) {
+  const Shipped card = shipped("pc-card");
+  const MemoryPlan plan = plan_memory(card.platform, card.placement, 128, 128, 3, std::nullopt);
+  ASSERT_EQ(plan.nodes.size(), 1U);
+  const NodePlan& node = plan.nodes[0];
+  // Both images (2 x 16384), layers 1 and 2 of both pyramids (2 x (64x64 + 32x32)), and the
+  // original layer's census features of both eyes (2 x 16384).
+  EXPECT_EQ(process(node, "features").buffer_bytes(),
+            2 * 16384U + 2 * (4096U + 1024U) + 2 * 16384U);
+  // The seeable disparity (4 B), the validity (1 B) and four REAL32 terrain maps.
+  EXPECT_EQ(process(node, "range").buffer_bytes(), 128U * 128U * (4 + 1 + 16));
+  EXPECT_EQ(process(node, "acquire").buffer_bytes(), 16384U);
+  EXPECT_EQ(plan.band_rows, 128);
+}
+
+TEST(MemoryPlan, NodeFiguresAddCodeWorkspacesAndThePeakHandOver) {
+  const Shipped card = shipped("pc-card");
+  const MemoryPlan plan = plan_memory(card.platform, card.placement, 128, 128, 3, std::nullopt);
+  const NodePlan& node = plan.nodes[0];
+  // 4 KB on chip + 2 MB external; 0x70 reserved by the processor.
+  EXPECT_EQ(node.memory_bytes, 4096U + 2048U * 1024U);
+  EXPECT_EQ(node.reserved_bytes, 0x70U);
+  std::size_t code = 0;
+  std::size_t workspace = 0;
+  for (const ProcessPlan& p : node.processes) {
+    code += p.code_bytes;
+    workspace += p.workspace_bytes;
+  }
+  EXPECT_EQ(node.code_bytes, code);
+  EXPECT_EQ(node.free_for_buffers(), node.memory_bytes - 0x70U - code - workspace);
+  // zones (terrain 16 B + validity + zone map) hands over to path (terrain, zone map, sweep
+  // costs 4 B and steps 1 B): the largest pair of neighbours.
+  EXPECT_EQ(node.buffer_bytes(), 128U * 128U * ((16 + 1 + 1) + (16 + 1 + 4 + 1)));
+  EXPECT_TRUE(node.fits());
+}
+
+TEST(MemoryPlan, OnboardModulesDoNotHoldTheWholeImageStages) {
+  const Shipped onboard = shipped("onboard");
+  const MemoryPlan plan =
+      plan_memory(onboard.platform, onboard.placement, 128, 128, 3, std::nullopt);
+  ASSERT_EQ(plan.nodes.size(), 2U); // the cold spares run nothing
+  EXPECT_EQ(plan.nodes[0].node, "module0");
+  EXPECT_EQ(plan.nodes[1].node, "module1");
+  EXPECT_FALSE(plan.nodes[1].fits()); // four REAL32 terrain maps alone are 256 KB
+  EXPECT_FALSE(plan.fits());
+  // With 1 MB per module (a what-if) the same plan fits.
+  EXPECT_TRUE(plan_memory(onboard.platform, onboard.placement, 128, 128, 3, 1024 * 1024).fits());
+}
+
+} // namespace
+} // namespace marsokhod::occam_port
