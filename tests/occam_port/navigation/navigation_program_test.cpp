@@ -29,9 +29,9 @@ struct SyntheticPair {
     rig = imaging::StereoRig(parameters);
     std::mt19937 random(seed);
     std::uniform_int_distribution<int> grey(0, 255);
-    imaging::Image<std::uint8_t> texture(160, 128);
+    imaging::Image<std::uint8_t> texture(192, 128); // room for x + 20 + d, d at most 17
     for (int y = 0; y < 128; ++y)
-      for (int x = 0; x < 160; ++x)
+      for (int x = 0; x < 192; ++x)
         texture(x, y) = static_cast<std::uint8_t>(grey(random));
     for (int y = 0; y < 128; ++y) {
       const int d = 2 + y / 8;
