@@ -58,6 +58,8 @@ void Link::set_powered(int end, bool powered) {
     return;
   framing_.reset_end(end, kernel_->now(), powered);
   LinkPort& port = ports_[end];
+  if (port.output_.active)
+    port.count_output();
   TraceSink* sink = trace();
   if (sink != nullptr && port.output_.active)
     sink->end_slice(port.out_track_, kernel_->now());

@@ -78,6 +78,7 @@ void LinkPort::start_output(std::span<const std::byte> message, Done done) {
   }
   Kernel& kernel = link_->kernel();
   output_ = Transfer{true, {}, message, 0, 0, link_->next_flow_id(), std::move(done)};
+  output_since_ = kernel.now();
   if (TraceSink* sink = link_->trace()) {
     sink->begin_slice(out_track_, kernel.now(), fmt::format("out {} bytes", message.size()));
     sink->flow_begin(out_track_, kernel.now(), output_.flow);
@@ -106,6 +107,8 @@ void LinkPort::start_input(std::span<std::byte> buffer, Done done) {
 }
 
 void LinkPort::finish(Transfer& transfer, TrackId track) {
+  if (&transfer == &output_)
+    count_output();
   Done done = std::move(transfer.on_done);
   transfer = Transfer{};
   if (TraceSink* sink = link_->trace())
@@ -114,7 +117,13 @@ void LinkPort::finish(Transfer& transfer, TrackId track) {
     done();
 }
 
+void LinkPort::count_output() {
+  bytes_sent_ += output_.done;
+  output_busy_ += link_->kernel().now() - output_since_;
+}
+
 void LinkPort::abandon_output() {
+  count_output();
   link_->framing_.withdraw_output(end_);
   output_ = Transfer{};
   if (TraceSink* sink = link_->trace())

@@ -19,18 +19,6 @@ namespace {
 /// Room for rocks nearer than the ground seen in the bottom row.
 constexpr double kNearRockAllowance = 1.25;
 
-void check_images_fit(imaging::ImageView<const std::uint8_t> left,
-                      imaging::ImageView<const std::uint8_t> right, const imaging::StereoRig& rig) {
-  if (left.width() != right.width() || left.height() != right.height())
-    throw std::invalid_argument(fmt::format("the left image is {}x{} but the right is {}x{}",
-                                            left.width(), left.height(), right.width(),
-                                            right.height()));
-  if (left.width() != rig.width() || left.height() != rig.height())
-    throw std::invalid_argument(fmt::format("the images are {}x{} but the rig is {}x{}",
-                                            left.width(), left.height(), rig.width(),
-                                            rig.height()));
-}
-
 // The level ground's disparity along each row of a `width`-pixel-wide left image, which is
 // affine in x: the line the strip outside the right image is judged against.
 class GroundRows {
@@ -96,6 +84,18 @@ imaging::Image<float> seeable_disparity(imaging::ImageView<const std::uint8_t> l
                          disparity.row(y), seeable.row(y));
   }
   return seeable;
+}
+
+void check_images_fit(imaging::ImageView<const std::uint8_t> left,
+                      imaging::ImageView<const std::uint8_t> right, const imaging::StereoRig& rig) {
+  if (left.width() != right.width() || left.height() != right.height())
+    throw std::invalid_argument(fmt::format("the left image is {}x{} but the right is {}x{}",
+                                            left.width(), left.height(), right.width(),
+                                            right.height()));
+  if (left.width() != rig.width() || left.height() != rig.height())
+    throw std::invalid_argument(fmt::format("the images are {}x{} but the rig is {}x{}",
+                                            left.width(), left.height(), rig.width(),
+                                            rig.height()));
 }
 
 int rover_max_disparity(const imaging::StereoRig& rig, const imaging::Attitude& attitude) {

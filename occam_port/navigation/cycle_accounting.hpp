@@ -1,11 +1,10 @@
-// CycleAccounting: the trace records of a cycle summed into CPU time per process and link
-// traffic per direction, passed on to the user's trace when there is one.
+// CycleAccounting: the trace records of a cycle summed into CPU time per process, passed on to
+// the user's trace when there is one.
 #pragma once
 
 // A trace sink in front of the user's (private to the navigation room). The kernel already
-// records a slice per process run on each CPU track and a slice per message on each link
-// direction's track ("out N bytes"); summing them gives every process's CPU time and every
-// link direction's busy time and bytes exactly, without a second bookkeeping in the kernel.
+// records a slice per process run on each CPU track; summing them gives every process's CPU
+// time exactly, without a second bookkeeping in the kernel's switch path.
 
 #include "marsokhod/emulator/trace/trace_sink.hpp"
 
@@ -36,21 +35,12 @@ public:
   const std::map<std::pair<std::string, std::string>, emulator::Tick>& cpu_time() const {
     return cpu_;
   }
-  /// Busy time and bytes of each link output, keyed by its port ("module0.link2").
-  struct Traffic {
-    emulator::Tick busy = 0;
-    std::uint64_t bytes = 0;
-  };
-  const std::map<std::string, Traffic>& link_outputs() const { return outputs_; }
-  /// The user's track for (group, name), for records the program adds itself; 0 without one.
-  emulator::TrackId forward_track(emulator::TrackId track) const { return tracks_[track].next_id; }
 
 private:
-  enum class Role : std::uint8_t { other, cpu, link_output };
   struct Track {
     std::string group;
     std::string name;
-    Role role = Role::other;
+    bool cpu = false;
     emulator::TrackId next_id = 0;
     std::vector<std::pair<emulator::Tick, std::string>> open; // start and slice name
   };
@@ -59,7 +49,6 @@ private:
   std::vector<Track> tracks_;
   std::map<std::pair<std::string, std::string>, emulator::TrackId> ids_;
   std::map<std::pair<std::string, std::string>, emulator::Tick> cpu_;
-  std::map<std::string, Traffic> outputs_;
 };
 
 } // namespace marsokhod::occam_port::detail

@@ -3,6 +3,7 @@
 
 #include "navigation/cycle_accounting.hpp"
 #include "navigation/cycle_state.hpp"
+#include "navigation/placement_checks.hpp"
 #include "navigation/program_processes.hpp"
 
 #include "marsokhod/emulator/links/link.hpp"
@@ -14,9 +15,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstring>
 #include <memory>
-#include <set>
 #include <stdexcept>
 
 namespace marsokhod::occam_port {
@@ -32,19 +31,10 @@ constexpr std::size_t kProcessStackBytes = 512 * 1024;
 void check_input(const CycleInput& input) {
   if (input.rig == nullptr)
     throw std::invalid_argument("emulated cycle: no rig");
-  if (input.left.width() != input.right.width() || input.left.height() != input.right.height())
-    throw std::invalid_argument(fmt::format("the left image is {}x{} but the right is {}x{}",
-                                            input.left.width(), input.left.height(),
-                                            input.right.width(), input.right.height()));
-  if (input.left.width() != input.rig->width() || input.left.height() != input.rig->height())
-    throw std::invalid_argument(fmt::format("the images are {}x{} but the rig is {}x{}",
-                                            input.left.width(), input.left.height(),
-                                            input.rig->width(), input.rig->height()));
+  nav::check_images_fit(input.left, input.right, *input.rig);
   nav::validate(input.options.zones);
   nav::validate(input.options.planner);
   nav::validate(input.options.drive);
-  std::pmr::vector<std::int16_t> unseen;
-  nav::validate(nav::rover_stereo_options(*input.rig, input.options, unseen));
 }
 
 emulator::PlatformSpec what_if(const emulator::PlatformSpec& platform,
@@ -54,24 +44,6 @@ emulator::PlatformSpec what_if(const emulator::PlatformSpec& platform,
     for (emulator::NodeSpec& node : changed.nodes)
       node.memory.external_bytes = *external_bytes;
   return changed;
-}
-
-bool is_device_kind(emulator::DeviceKind kind) {
-  return kind == emulator::DeviceKind::frame_store || kind == emulator::DeviceKind::host;
-}
-
-// The first unbroken wire joining two owners, as (link at a, link at b).
-std::optional<std::pair<int, int>> wire_between(const emulator::PlatformSpec& platform,
-                                                const std::string& a, const std::string& b) {
-  for (const emulator::WireSpec& wire : platform.wires) {
-    if (wire.broken)
-      continue;
-    if (wire.a.owner == a && wire.b.owner == b)
-      return std::pair{wire.a.link, wire.b.link};
-    if (wire.b.owner == a && wire.a.owner == b)
-      return std::pair{wire.b.link, wire.a.link};
-  }
-  return std::nullopt;
 }
 
 std::vector<std::byte> image_bytes(imaging::ImageView<const std::uint8_t> image) {
@@ -107,10 +79,9 @@ void build(Network& net, const emulator::PlatformSpec& platform, const CycleInpu
   }
   const std::vector<std::byte> left = image_bytes(input.left);
   const std::vector<std::byte> right = image_bytes(input.right);
+  // Both kinds of device serve the program: the frame store holds the pair's images, and the
+  // host PC of a card serves them the same way.
   for (const emulator::DeviceSpec& device : platform.devices) {
-    if (!is_device_kind(device.kind))
-      continue;
-    // The frame store holds the pair's images; the host PC of a card serves them the same way.
     emulator::DeviceSpec serving = device;
     serving.kind = emulator::DeviceKind::frame_store;
     serving.cameras = 2;
@@ -124,31 +95,27 @@ void build(Network& net, const emulator::PlatformSpec& platform, const CycleInpu
         }));
   }
   for (const emulator::NodeSpec& node : platform.nodes)
-    for (const emulator::DeviceSpec& device : platform.devices)
-      if (is_device_kind(device.kind) && !cycle.device_ports.contains(node.name))
-        if (const auto wire = wire_between(platform, node.name, device.name))
-          cycle.device_ports[node.name] = net.links->port(node.name, wire->first);
+    if (const emulator::WireSpec* wire = detail::device_wire(platform, node.name))
+      cycle.device_ports[node.name] =
+          net.links->port(node.name, wire->a.owner == node.name ? wire->a.link : wire->b.link);
 }
 
-// Channels between nodes go on the wire joining them (load_placement has checked that there is
-// one, and that no two channels share a direction).
+// Channels between nodes go on the wire joining them: load_placement has checked that there
+// is a sound one, and that no two channels share a direction.
 void place_channels(Network& net, const emulator::PlatformSpec& platform,
                     const Placement& placement, CycleState& cycle) {
-  std::map<std::string, std::string> users; // "module0.link0" -> channel
   for (const ProgramShape::Channel& channel : navigation_program_shape().channels) {
     const std::string& from = placement.node_of(channel.from);
     const std::string& to = placement.node_of(channel.to);
     if (from == to)
       continue;
-    const auto wire = wire_between(platform, from, to);
-    if (!wire) // load_placement checks every route
+    const emulator::WireSpec* wire = detail::wire_between(platform, from, to);
+    if (wire == nullptr || wire->broken)
       throw std::logic_error("channel " + channel.name + " has no wire from " + from + " to " + to);
-    emulator::LinkPort& out = net.links->require_port(from, wire->first);
-    emulator::LinkPort& in = net.links->require_port(to, wire->second);
-    // load_placement refuses a second channel on one link direction (docs/formats.md).
-    if (!users.emplace(out.name(), channel.name).second)
-      throw std::logic_error("channel " + channel.name + " shares link " + out.name());
-    cycle.channels.named(channel.name)->place_on_link(out, in);
+    const bool forward = wire->a.owner == from;
+    cycle.channels.named(channel.name)
+        ->place_on_link(net.links->require_port(from, forward ? wire->a.link : wire->b.link),
+                        net.links->require_port(to, forward ? wire->b.link : wire->a.link));
   }
 }
 
@@ -230,11 +197,9 @@ void collect_figures(Network& net, const emulator::PlatformSpec& platform,
   for (const auto& link : net.links->links())
     for (int end = 0; end < 2; ++end) {
       const emulator::LinkPort& port = link->port(end);
-      const auto found = accounting.link_outputs().find(port.name());
-      if (found == accounting.link_outputs().end())
-        continue;
-      out.links.push_back(
-          {port.name(), link->port(1 - end).name(), found->second.bytes, found->second.busy});
+      if (port.bytes_sent() > 0)
+        out.links.push_back(
+            {port.name(), link->port(1 - end).name(), port.bytes_sent(), port.output_busy_time()});
     }
 }
 
@@ -248,6 +213,7 @@ CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetu
   {
     std::pmr::vector<std::int16_t> unseen;
     const nav::StereoOptions stereo = nav::rover_stereo_options(*input.rig, input.options, unseen);
+    nav::validate(stereo);
     out.plan = plan_memory(platform, placement, input.left.width(), input.left.height(),
                            nav::pyramid_levels_for(input.left.width(), input.left.height(), stereo),
                            std::nullopt);

@@ -12,16 +12,11 @@
 #include <stdexcept>
 
 namespace marsokhod::occam_port::detail {
-namespace {
-
 using emulator::PlatformSpec;
 using emulator::WireSpec;
 
-/// A wire directly joining nodes `x` and `y`, either way round, broken or not; nullptr if none.
 const WireSpec* wire_between(const PlatformSpec& platform, const std::string& x,
                              const std::string& y) {
-  // A broken wire is only taken when no sound one joins the pair, so that the message can say
-  // a cable is broken rather than missing.
   const WireSpec* found = nullptr;
   for (const WireSpec& wire : platform.wires) {
     const bool joins =
@@ -33,27 +28,23 @@ const WireSpec* wire_between(const PlatformSpec& platform, const std::string& x,
   return found;
 }
 
-/// Whether `node` has an unbroken wire to a powered device that serves the program: a frame
-/// store (images) or a host (images and telemetry on the PC card).
-bool reaches_a_device(const PlatformSpec& platform, const std::string& node) {
-  return std::any_of(
-      platform.wires.begin(), platform.wires.end(),
-      [&](const WireSpec& wire) {
-        if (wire.broken)
-          return false;
-        const bool a_is_node = !wire.a.device && wire.a.owner == node;
-        const bool b_is_node = !wire.b.device && wire.b.owner == node;
-        const emulator::LinkEndpoint& other = a_is_node ? wire.b : wire.a;
-        if ((!a_is_node && !b_is_node) || !other.device)
-          return false;
-        const emulator::DeviceSpec* device = platform.find_device(other.owner);
-        return device != nullptr && device->powered &&
-               (device->kind == emulator::DeviceKind::frame_store ||
-                device->kind == emulator::DeviceKind::host);
-      });
+const WireSpec* device_wire(const PlatformSpec& platform, const std::string& node) {
+  for (const WireSpec& wire : platform.wires) {
+    if (wire.broken)
+      continue;
+    const bool a_is_node = !wire.a.device && wire.a.owner == node;
+    const bool b_is_node = !wire.b.device && wire.b.owner == node;
+    const emulator::LinkEndpoint& other = a_is_node ? wire.b : wire.a;
+    if ((!a_is_node && !b_is_node) || !other.device)
+      continue;
+    const emulator::DeviceSpec* device = platform.find_device(other.owner);
+    if (device != nullptr && device->powered &&
+        (device->kind == emulator::DeviceKind::frame_store ||
+         device->kind == emulator::DeviceKind::host))
+      return &wire;
+  }
+  return nullptr;
 }
-
-} // namespace
 
 void check_shape(const ProgramShape& shape) {
   const std::set<std::string, std::less<>> processes(shape.processes.begin(),
@@ -129,11 +120,11 @@ void check_program_fits(const Placement& placement, int header_line, const Platf
   for (const ProgramShape::DeviceUse& use : shape.devices) {
     const std::size_t i = index.at(use.process);
     const ProcessPlace& place = placement.places[i];
-    if (reaches_a_device(platform, place.node))
+    if (device_wire(platform, place.node) != nullptr)
       continue;
     std::vector<std::string> able;
     for (const emulator::NodeSpec& node : platform.nodes)
-      if (node.powered && reaches_a_device(platform, node.name))
+      if (node.powered && device_wire(platform, node.name) != nullptr)
         able.push_back(node.name);
     throw PlacementError(
         placement.source, place.line, fmt::format("process[{}].node", i),

@@ -115,6 +115,16 @@ TEST(FrameStore, HandsEachUploadToTheSinkWithItsLink) {
   EXPECT_TRUE(received[1].second.empty());
   EXPECT_EQ(store.uploads_received(), 2U);
   EXPECT_EQ(store.requests_served(), 1U);
+  // Each end counts what it sent: two headers, the payload and the request; the image back.
+  const LinkPort& module1_end = network.require_port("module1", 3);
+  const LinkPort& store_end = network.require_port("rover_io", 1);
+  EXPECT_EQ(module1_end.bytes_sent(), 5U + 300U + 5U + 1U);
+  EXPECT_EQ(store_end.bytes_sent(), 128U * 128U);
+  // Data packets of 11 bits at 10 Mbit/s follow each other on the wire without overlapping, so
+  // every byte but the last holds the wire at least 1.1 us (the last one's acknowledge may come
+  // back before its stop bit).
+  EXPECT_GE(to_microseconds(store_end.output_busy_time()), (128 * 128 - 1) * 1.1);
+  EXPECT_LE(store_end.output_busy_time(), kernel.now());
 }
 
 } // namespace

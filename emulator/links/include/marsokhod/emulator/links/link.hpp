@@ -43,6 +43,11 @@ public:
   void start_input(std::span<std::byte> buffer, Done done);
   bool output_busy() const { return output_.active; }
   bool input_busy() const { return input_.active; }
+  /// Bytes this end has sent and had acknowledged, over all its outputs.
+  std::uint64_t bytes_sent() const { return bytes_sent_; }
+  /// Simulated time this end's output engine spent on messages, from each output's start to
+  /// its last acknowledge (or until it was given up).
+  Tick output_busy_time() const { return output_busy_; }
 
   /// A byte has arrived that no input has taken yet (an ALT guard on this link is ready).
   bool byte_waiting() const;
@@ -66,6 +71,8 @@ private:
 
   void finish(Transfer& transfer, TrackId track);
   void abandon_output();
+  /// Adds the output in progress (its acknowledged bytes, its time so far) to the totals.
+  void count_output();
   void abandon_input();
 
   std::string name_;
@@ -74,6 +81,9 @@ private:
   Transfer output_;
   Transfer input_;
   std::byte held_{};
+  Tick output_since_ = 0;
+  std::uint64_t bytes_sent_ = 0;
+  Tick output_busy_ = 0;
   std::function<void()> arrival_listener_;
   TrackId out_track_ = 0;
   TrackId in_track_ = 0;

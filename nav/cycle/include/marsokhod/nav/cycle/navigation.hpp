@@ -37,6 +37,10 @@ struct NavigationOptions {
   }
 };
 
+/// Throws std::invalid_argument when the two images differ in size or do not have the rig's.
+void check_images_fit(imaging::ImageView<const std::uint8_t> left,
+                      imaging::ImageView<const std::uint8_t> right, const imaging::StereoRig& rig);
+
 /// The largest disparity a rover pair can hold: the nearest ground the rig sees (the bottom
 /// row) at the given attitude, plus a quarter for rocks standing in front of it, at most the
 /// image width minus one.
