@@ -30,8 +30,8 @@ void transpose4x4(Floats4& a, Floats4& b, Floats4& c, Floats4& d) {
 struct BandRows {
   BandRows(LayerOutput& output, int y0, int lines) : rows(lines) {
     for (int lane = 0; lane < rows; ++lane) {
-      disparity[lane] = output.disparity.row(y0 + lane);
-      valid[lane] = output.valid.row(y0 + lane);
+      disparity[lane] = output.disparity.row(y0 + lane - output.first_row);
+      valid[lane] = output.valid.row(y0 + lane - output.first_row);
     }
   }
   float* disparity[kBandRows] = {};

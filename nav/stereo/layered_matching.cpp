@@ -40,15 +40,14 @@ detail::DisparityLimits layer_limits(const StereoOptions& options, int level, in
 
 // Fill and smooth a layer: coarse layers are always filled since they guide the next layer.
 template <class Meter>
-void finish_layer(detail::LayerOutput& layer, FillPolicy fill, bool median, Meter& meter,
-                  std::pmr::memory_resource* memory) {
-  fill_disparity(layer.disparity.view(), layer.valid.view(), fill, meter, memory);
+void finish_layer(imaging::Image<float>& disparity, imaging::ImageView<const std::uint8_t> valid,
+                  FillPolicy fill, bool median, Meter& meter, std::pmr::memory_resource* memory) {
+  fill_disparity(disparity.view(), valid, fill, meter, memory);
   if (!median || fill == FillPolicy::none)
     return;
-  imaging::Image<float> smoothed(layer.disparity.width(), layer.disparity.height(), 1, 0.0F,
-                                 memory);
-  median3x3(layer.disparity.view(), smoothed.view(), meter, memory);
-  layer.disparity = std::move(smoothed);
+  imaging::Image<float> smoothed(disparity.width(), disparity.height(), 1, 0.0F, memory);
+  median3x3(disparity.view(), smoothed.view(), meter, memory);
+  disparity = std::move(smoothed);
 }
 
 } // namespace
@@ -64,6 +63,14 @@ std::optional<std::string> uniform_pair_reason(imaging::ImageView<const std::uin
   return std::nullopt;
 }
 
+template <class Meter>
+void finish_original_layer(imaging::Image<float>& disparity,
+                           imaging::ImageView<const std::uint8_t> valid,
+                           const StereoOptions& options, Meter& meter,
+                           std::pmr::memory_resource* memory) {
+  finish_layer(disparity, valid, options.fill, options.median, meter, memory);
+}
+
 StereoResult unmatched_stereo(int width, int height, std::string reason,
                               std::pmr::memory_resource* memory) {
   StereoResult result{
@@ -74,8 +81,8 @@ StereoResult unmatched_stereo(int width, int height, std::string reason,
 }
 
 LayeredMatching::LayeredMatching(int width, int height, const StereoOptions& options,
-                                 std::pmr::memory_resource* memory)
-    : width_(width), height_(height), options_(options), memory_(memory),
+                                 std::pmr::memory_resource* memory, const MatchedBandSink* bands)
+    : width_(width), height_(height), options_(options), memory_(memory), bands_(bands),
       levels_((detail::check_pair_size(width, height, options),
                pyramid_levels_for(width, height, options))),
       next_level_(levels_ - 1), stats_(memory), disparity_(memory), valid_(memory) {}
@@ -101,23 +108,32 @@ void LayeredMatching::match_layer(imaging::ImageView<const std::uint8_t> left,
   // The original layer's check decides what is reliable. The top layer's check only bounds
   // the ground prior and, through the fill, guides the layers below; with the strip left out
   // there too, one site more lost its path and one path became unsafe (50 sites).
-  if (level == 0)
+  if (level == 0) {
     input.unseen = options_.unseen_columns;
+    input.bands = bands_;
+  }
   detail::LayerOutput layer = detail::match_layer(input, options_, meter, memory_);
   stats_.push_back({level, left.width(), left.height(), layer.candidates, layer.valid_pixels});
   if (layer.valid_pixels == 0) {
-    failed_ = unmatched_stereo(
-        width_, height_,
-        fmt::format("no pixel passed the left-right check at pyramid layer {}", level), memory_);
+    std::string reason =
+        fmt::format("no pixel passed the left-right check at pyramid layer {}", level);
+    failed_ = bands_ != nullptr ? unmatched_stereo(0, 0, std::move(reason), memory_)
+                                : unmatched_stereo(width_, height_, std::move(reason), memory_);
     failed_->layers = std::move(stats_);
     next_level_ = -1;
     return;
   }
-  finish_layer(layer, level > 0 ? FillPolicy::background_along_row : options_.fill, options_.median,
-               meter, memory_);
+  if (input.bands == nullptr) {
+    if (level > 0)
+      finish_layer(layer.disparity, layer.valid, FillPolicy::background_along_row, options_.median,
+                   meter, memory_);
+    else
+      finish_original_layer(layer.disparity, layer.valid, options_, meter, memory_);
+  }
   guide.reset();
-  disparity_ = std::move(layer.disparity);
-  valid_ = std::move(layer.valid);
+  // Handed on band by band, the original layer leaves nothing behind but its figures.
+  disparity_ = input.bands != nullptr ? imaging::Image<float>(memory_) : std::move(layer.disparity);
+  valid_ = input.bands != nullptr ? imaging::Image<std::uint8_t>(memory_) : std::move(layer.valid);
   valid_pixels_ = layer.valid_pixels;
   --next_level_;
 }
@@ -134,7 +150,10 @@ StereoResult LayeredMatching::take_result() {
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
   template void LayeredMatching::match_layer<M>(imaging::ImageView<const std::uint8_t>,            \
-                                                const LayerFeatures&, const LayerFeatures&, M&);
+                                                const LayerFeatures&, const LayerFeatures&, M&);   \
+  template void finish_original_layer<M>(imaging::Image<float>&,                                   \
+                                         imaging::ImageView<const std::uint8_t>,                   \
+                                         const StereoOptions&, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE
 

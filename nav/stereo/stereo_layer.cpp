@@ -20,6 +20,7 @@ namespace marsokhod::nav::detail {
 namespace {
 
 constexpr float kUnknown = std::numeric_limits<float>::infinity();
+static_assert(kBandRows == kMatchedBandRows, "the public band height is the matcher's");
 
 // Buffers reused by every band of the layer.
 struct BandWorkspace {
@@ -90,6 +91,24 @@ std::array<std::int16_t, kBandRows> band_unseen(std::span<const std::int16_t> un
   return lanes;
 }
 
+// The whole layer, or one band's rows when the layer goes out band by band.
+LayerOutput layer_output(const LayerInput& input, std::pmr::memory_resource* memory) {
+  const int width = input.left.width();
+  const int rows =
+      input.bands != nullptr ? std::min(kBandRows, input.left.height()) : input.left.height();
+  return {imaging::Image<float>(width, rows, 1, kUnknown, memory),
+          imaging::Image<std::uint8_t>(width, rows, 1, 0, memory), 0, 0, 0};
+}
+
+// Hands the band just written on, when the layer goes out band by band.
+void hand_on(const LayerInput& input, const LayerOutput& output, int y0, int rows) {
+  if (input.bands == nullptr)
+    return;
+  const int width = output.disparity.width();
+  (*input.bands)(MatchedBand{y0, output.disparity.view().sub(0, 0, width, rows),
+                             output.valid.view().sub(0, 0, width, rows)});
+}
+
 } // namespace
 
 template <class Meter>
@@ -97,8 +116,7 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
                         std::pmr::memory_resource* memory) {
   const int width = input.left.width();
   const int height = input.left.height();
-  LayerOutput output{imaging::Image<float>(width, height, 1, kUnknown, memory),
-                     imaging::Image<std::uint8_t>(width, height, 1, 0, memory), 0, 0};
+  LayerOutput output = layer_output(input, memory);
   BandWorkspace band(width, input.limits.high, memory);
   MatchingCost matching(options.feature, width, input.limits.high, memory);
   BandDp dp(width, input.limits.high, memory);
@@ -110,6 +128,8 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
     const int y0 = (prior ? bands - 1 - step : step) * kBandRows;
     const int rows = std::min(kBandRows, height - y0);
     const auto pixels = static_cast<std::uint64_t>(width * rows);
+    if (input.bands != nullptr)
+      output.first_row = y0;
     if (input.guide != nullptr) {
       input.guide->wanted(y0, width, options.search_band, band.wanted_low, band.wanted_high);
     } else {
@@ -135,6 +155,7 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
     if (!input.check) {
       accept_band(band.choice, y0, rows, output);
       output.candidates += cells;
+      hand_on(input, output, y0, rows);
       continue;
     }
     // Choosing the right view is one more minimum over the band's cells.
@@ -148,6 +169,7 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
         check_band(band.choice, band.right_lines, y0, rows, options.lr_tolerance, output);
     report(meter, Work::consistency_check, pixels);
     output.candidates += cells;
+    hand_on(input, output, y0, rows);
     if (prior && largest >= 0)
       bound = largest + options.prior_margin;
   }

@@ -8,6 +8,7 @@
 
 #include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/nav/features/layer_features.hpp"
+#include "marsokhod/nav/stereo/layered_matching.hpp"
 #include "marsokhod/nav/stereo/stereo.hpp"
 
 #include <cstdint>
@@ -32,12 +33,17 @@ struct LayerInput {
   /// right view (StereoOptions::unseen_columns; given at the original layer only); empty for
   /// none.
   std::span<const std::int16_t> unseen;
+  /// Where the layer's rows go band by band as they are matched, or null to keep the whole
+  /// layer in the output.
+  const MatchedBandSink* bands = nullptr;
 };
 
-/// One layer's disparity (+inf where unreliable) and left-right validity.
+/// One layer's disparity (+inf where unreliable) and left-right validity: the whole layer, or
+/// the band being matched when the layer goes out band by band.
 struct LayerOutput {
   imaging::Image<float> disparity;
   imaging::Image<std::uint8_t> valid;
+  int first_row = 0; ///< the layer row the images' row 0 holds
   std::uint64_t candidates = 0;
   std::uint64_t valid_pixels = 0;
 };

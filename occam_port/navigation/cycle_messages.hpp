@@ -46,14 +46,20 @@ void send_image(BlockChannel& channel, imaging::ImageView<const T> image) {
     channel.send(std::as_bytes(std::span(image.row(y), row_elements)));
 }
 
+/// Receives rows sent by send_image into the rows of `rows`, which both sides know the size of.
+template <typename T>
+void receive_rows(BlockChannel& channel, imaging::ImageView<T> rows) {
+  const auto row_elements = static_cast<std::size_t>(rows.width() * rows.channels());
+  for (int y = 0; y < rows.height(); ++y)
+    channel.receive(std::as_writable_bytes(std::span(rows.row(y), row_elements)));
+}
+
 /// Receives an image of a size both sides know into a buffer from `memory`.
 template <typename T>
 imaging::Image<T> receive_image(BlockChannel& channel, int width, int height,
                                 std::pmr::memory_resource* memory) {
   imaging::Image<T> image(width, height, 1, T{}, memory);
-  const auto row_elements = static_cast<std::size_t>(width);
-  for (int y = 0; y < height; ++y)
-    channel.receive(std::as_writable_bytes(std::span(image.row(y), row_elements)));
+  receive_rows(channel, image.view());
   return image;
 }
 

@@ -29,6 +29,7 @@ namespace marsokhod::occam_port::detail {
 struct CycleChannels {
   BlockChannel images{"images"};
   BlockChannel features{"features"};
+  BlockChannel matched{"matched"};
   BlockChannel disparity{"disparity"};
   BlockChannel terrain{"terrain"};
   BlockChannel zones{"zones"};

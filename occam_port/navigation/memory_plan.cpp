@@ -4,6 +4,8 @@
 
 #include "navigation/program_processes.hpp"
 
+#include "marsokhod/nav/stereo/layered_matching.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -50,9 +52,11 @@ std::vector<PlannedBuffer> buffers_of(std::string_view process, const Geometry& 
             image("census features, left", g, 1),
             image("census features, right", g, 1),
             {"coarser layer's disparity and validity", g.pixels() / 4 * 5},
-            image("disparity", g, 4),
-            image("validity", g, 1),
-            image("smoothed disparity", g, 4)};
+            {buffer_name("a band of disparity and validity", nav::kMatchedBandRows, g.width, 5),
+             static_cast<std::size_t>(nav::kMatchedBandRows * g.width) * 5}};
+  if (process == "refine")
+    return {image("left image", g, 1), image("disparity, filled and smoothed", g, 4),
+            image("validity", g, 1), image("texture mask", g, 1), image("seeable disparity", g, 4)};
   if (process == "range")
     return {image("seeable disparity", g, 4), image("validity", g, 1),
             image("terrain points (forward, left, elevation, range)", g, 16)};
@@ -104,7 +108,7 @@ MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& 
                        int width, int height, int pyramid_levels,
                        std::optional<std::size_t> external_bytes) {
   const Geometry geometry{width, height, pyramid_levels};
-  MemoryPlan plan{width, height, height, {}};
+  MemoryPlan plan{width, height, nav::kMatchedBandRows, {}};
   for (const emulator::NodeSpec& node : platform.nodes) {
     NodePlan node_plan;
     node_plan.node = node.name;
@@ -126,7 +130,8 @@ MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& 
 }
 
 std::string describe(const MemoryPlan& plan) {
-  std::string text = fmt::format("memory plan for {}x{} images, bands of {} rows\n",
+  std::string text = fmt::format("memory plan for {}x{} images: the original layer matched in "
+                                 "bands of {} rows, the other stages on whole images\n",
                                  plan.image_width, plan.image_height, plan.band_rows);
   for (const NodePlan& node : plan.nodes) {
     text += fmt::format("  {}: {} B = {} reserved + {} code + {} workspaces + {} free for "

@@ -1,14 +1,10 @@
-// The navigation program's processes, from image acquisition to telemetry.
+// The navigation program's processes from image acquisition to telemetry, the stereo half aside.
 
-#include "navigation/cycle_messages.hpp"
-#include "navigation/cycle_state.hpp"
+#include "navigation/process_bodies.hpp"
 
 #include "marsokhod/emulator/links/link.hpp"
 #include "marsokhod/emulator/links/link_frame_store.hpp"
 #include "marsokhod/nav/cycle/motion_scheme.hpp"
-#include "marsokhod/nav/features/layer_features.hpp"
-#include "marsokhod/nav/features/pair_pyramid.hpp"
-#include "marsokhod/nav/stereo/layered_matching.hpp"
 
 #include <fmt/format.h>
 
@@ -19,9 +15,6 @@
 namespace marsokhod::occam_port::detail {
 namespace {
 
-using U8Image = imaging::Image<std::uint8_t>;
-using FloatImage = imaging::Image<float>;
-
 /// The plan's fixed part, as the path process hands it to drive and drive to telemetry.
 struct PlanHeader {
   std::int32_t found = 0;
@@ -30,22 +23,6 @@ struct PlanHeader {
   double cost = 0.0;
   double score = 0.0;
 };
-
-std::string image_what(std::string_view what, int width, int height, int bytes) {
-  return buffer_name(what, height, width, bytes);
-}
-
-U8Image receive_bytes(ProcessContext& c, BlockChannel& channel, std::string_view what, int width,
-                      int height) {
-  c.doing(image_what(what, width, height, 1));
-  return receive_image<std::uint8_t>(channel, width, height, c.memory());
-}
-
-FloatImage receive_floats(ProcessContext& c, BlockChannel& channel, std::string_view what) {
-  const CycleState& s = c.cycle();
-  c.doing(image_what(what, s.width, s.height, 4));
-  return receive_image<float>(channel, s.width, s.height, c.memory());
-}
 
 void send_terrain(BlockChannel& channel, const nav::TerrainPoints& terrain) {
   for (const FloatImage* plane :
@@ -62,34 +39,6 @@ nav::TerrainPoints receive_terrain(ProcessContext& c, BlockChannel& channel) {
   terrain.range = receive_floats(c, channel, "terrain range");
   terrain.known_pixels = receive_value<std::uint64_t>(channel);
   return terrain;
-}
-
-void send_features(BlockChannel& channel, const nav::LayerFeatures& features) {
-  if (features.kind == nav::FeatureKind::census3x3) {
-    send_image<std::uint8_t>(channel, features.bytes.view());
-    return;
-  }
-  send_image<std::uint32_t>(channel, features.words.view());
-}
-
-nav::LayerFeatures receive_features(ProcessContext& c, BlockChannel& channel, std::string_view eye,
-                                    int width, int height) {
-  const nav::FeatureKind kind = c.cycle().options.stereo.feature;
-  nav::LayerFeatures features{kind, U8Image(c.memory()), imaging::Image<std::uint32_t>(c.memory())};
-  if (kind == nav::FeatureKind::census3x3) {
-    features.bytes =
-        receive_bytes(c, channel, fmt::format("census features, {}", eye), width, height);
-    return features;
-  }
-  c.doing(image_what(fmt::format("features, {}", eye), width, height, 4));
-  features.words = receive_image<std::uint32_t>(channel, width, height, c.memory());
-  return features;
-}
-
-// The cycle's stereo options, worked out on the node as the program would at its start.
-nav::StereoOptions stereo_options(ProcessContext& c, std::pmr::vector<std::int16_t>& unseen) {
-  c.doing(fmt::format("unseen columns, {} rows x 2 B", c.cycle().height));
-  return nav::rover_stereo_options(*c.cycle().rig, c.cycle().options, unseen);
 }
 
 void upload(ProcessContext& c, std::span<const std::byte> payload) {
@@ -119,89 +68,6 @@ void acquire(ProcessContext& c) {
     port.input(std::as_writable_bytes(std::span(image.data(), image.size())));
     send_image<std::uint8_t>(s.channels.images, image.view());
   }
-}
-
-void features(ProcessContext& c) {
-  CycleState& s = c.cycle();
-  const U8Image left = receive_bytes(c, s.channels.images, "left image", s.width, s.height);
-  c.start_stage();
-  const U8Image right = receive_bytes(c, s.channels.images, "right image", s.width, s.height);
-  const std::optional<std::string> uniform = nav::uniform_pair_reason(left, right);
-  send_text(s.channels.features, uniform.value_or(""));
-  if (uniform) {
-    send_image<std::uint8_t>(s.channels.features, left.view());
-    return;
-  }
-  std::pmr::vector<std::int16_t> unseen(c.memory());
-  const nav::StereoOptions options = stereo_options(c, unseen);
-  const int levels = nav::pyramid_levels_for(s.width, s.height, options);
-  c.doing(fmt::format("pyramid layers 1..{}, both eyes", levels - 1));
-  const nav::PairPyramid pyramid(left, right, levels, c.meter(), c.memory());
-  for (int level = levels - 1; level >= 0; --level) {
-    const auto left_layer = pyramid.layer(level, imaging::Eye::left);
-    c.doing(image_what(fmt::format("layer {} features", level), left_layer.width(),
-                       left_layer.height(), 1));
-    const nav::LayerFeatures left_features =
-        nav::layer_features(left_layer, options.feature, c.meter(), c.memory());
-    const nav::LayerFeatures right_features = nav::layer_features(
-        pyramid.layer(level, imaging::Eye::right), options.feature, c.meter(), c.memory());
-    send_image<std::uint8_t>(s.channels.features, left_layer);
-    send_features(s.channels.features, left_features);
-    send_features(s.channels.features, right_features);
-  }
-}
-
-nav::StereoResult match_layers(ProcessContext& c, const nav::StereoOptions& options,
-                               U8Image& left) {
-  CycleState& s = c.cycle();
-  nav::LayeredMatching matching(s.width, s.height, options, c.memory());
-  for (int level = matching.levels() - 1; level >= 0; --level) {
-    const int width = s.width >> level;
-    const int height = s.height >> level;
-    U8Image layer = receive_bytes(c, s.channels.features, fmt::format("layer {} left image", level),
-                                  width, height);
-    const nav::LayerFeatures left_features =
-        receive_features(c, s.channels.features, "left", width, height);
-    const nav::LayerFeatures right_features =
-        receive_features(c, s.channels.features, "right", width, height);
-    if (level == matching.levels() - 1)
-      c.start_stage();
-    c.doing(fmt::format("matching layer {} ({}x{}): cost rows, layer disparity and validity", level,
-                        width, height));
-    if (!matching.finished())
-      matching.match_layer(layer, left_features, right_features, c.meter());
-    if (level == 0)
-      left = std::move(layer);
-  }
-  return matching.take_result();
-}
-
-void matching(ProcessContext& c) {
-  CycleState& s = c.cycle();
-  const std::string uniform = receive_text(s.channels.features, c.memory());
-  std::pmr::vector<std::int16_t> unseen(c.memory());
-  const nav::StereoOptions options = stereo_options(c, unseen);
-  U8Image left(c.memory());
-  nav::StereoResult stereo(nav::StereoResult{FloatImage(c.memory()),
-                                             U8Image(c.memory()),
-                                             0,
-                                             std::pmr::vector<nav::StereoLayerStats>(c.memory()),
-                                             {}});
-  if (!uniform.empty()) {
-    left = receive_bytes(c, s.channels.features, "left image", s.width, s.height);
-    c.start_stage();
-    c.doing(image_what("unmatched disparity and validity", s.width, s.height, 5));
-    stereo = nav::unmatched_stereo(s.width, s.height, uniform, c.memory());
-  } else {
-    stereo = match_layers(c, options, left);
-  }
-  c.doing(image_what("seeable disparity and texture mask", s.width, s.height, 5));
-  const FloatImage seeable =
-      nav::seeable_disparity(left, stereo.disparity, *s.rig, s.options, c.memory());
-  s.products.stereo = stereo;
-  send_text(s.channels.disparity, stereo.reason);
-  send_image<float>(s.channels.disparity, seeable.view());
-  send_image<std::uint8_t>(s.channels.disparity, stereo.valid.view());
 }
 
 void range(ProcessContext& c) {
@@ -330,9 +196,9 @@ void telemetry(ProcessContext& c) {
 
 void run_process(ProcessContext& context) {
   static const std::map<std::string_view, void (*)(ProcessContext&)> bodies{
-      {"acquire", acquire}, {"features", features}, {"matching", matching},
-      {"range", range},     {"zones", zones},       {"path", path},
-      {"drive", drive},     {"motion", motion},     {"telemetry", telemetry}};
+      {"acquire", acquire}, {"features", features},  {"matching", matching}, {"refine", refine},
+      {"range", range},     {"zones", zones},        {"path", path},         {"drive", drive},
+      {"motion", motion},   {"telemetry", telemetry}};
   bodies.at(context.name())(context);
 }
 

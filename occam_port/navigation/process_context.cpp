@@ -7,8 +7,8 @@
 namespace marsokhod::occam_port::detail {
 
 BlockChannel* CycleChannels::named(std::string_view name) {
-  for (BlockChannel* channel :
-       {&images, &features, &disparity, &terrain, &zones, &path, &commands, &plan_out, &wheels})
+  for (BlockChannel* channel : {&images, &features, &matched, &disparity, &terrain, &zones, &path,
+                                &commands, &plan_out, &wheels})
     if (channel->name() == name)
       return channel;
   return nullptr;

@@ -11,10 +11,11 @@ namespace detail {
 
 std::span<const ProcessSpec> program_processes() {
   using emulator::Priority;
-  static constexpr std::array<ProcessSpec, 9> processes{{
+  static constexpr std::array<ProcessSpec, 10> processes{{
       {"acquire", Priority::low, 256, 512},
       {"features", Priority::low, 1536, 512},
-      {"matching", Priority::low, 6144, 512},
+      {"matching", Priority::low, 5120, 512},
+      {"refine", Priority::low, 1536, 512},
       {"range", Priority::low, 1024, 512},
       {"zones", Priority::low, 4096, 512},
       {"path", Priority::low, 2048, 512},
@@ -33,10 +34,10 @@ const ProgramShape& navigation_program_shape() {
     for (const detail::ProcessSpec& process : detail::program_processes())
       made.processes.emplace_back(process.name);
     made.channels = {{"images", "acquire", "features"},  {"features", "features", "matching"},
-                     {"disparity", "matching", "range"}, {"terrain", "range", "zones"},
-                     {"zones", "zones", "path"},         {"path", "path", "drive"},
-                     {"commands", "drive", "motion"},    {"plan_out", "drive", "telemetry"},
-                     {"wheels", "motion", "telemetry"}};
+                     {"matched", "matching", "refine"},  {"disparity", "refine", "range"},
+                     {"terrain", "range", "zones"},      {"zones", "zones", "path"},
+                     {"path", "path", "drive"},          {"commands", "drive", "motion"},
+                     {"plan_out", "drive", "telemetry"}, {"wheels", "motion", "telemetry"}};
     made.devices = {{"acquire", "images from the frame store"},
                     {"telemetry", "telemetry to the host or ground"}};
     return made;

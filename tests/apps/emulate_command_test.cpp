@@ -148,7 +148,7 @@ TEST(EmulateCommand, MemoryFaultStopsTheCycleNamingNodeProcessAndBuffer) {
   EXPECT_NE(run.err.find(fault["what"].get<std::string>()), std::string::npos);
   EXPECT_FALSE(run.summary["found"].get<bool>());
   // Every process's high-water mark is reported, and none exceeds its node's memory.
-  ASSERT_EQ(run.summary["processes"].size(), 9U);
+  ASSERT_EQ(run.summary["processes"].size(), 10U);
   for (const auto& process : run.summary["processes"])
     EXPECT_LE(process["peak_bytes"].get<std::size_t>(), 36U * 1024) << process["name"];
   // The trace up to the fault is a whole JSON document.

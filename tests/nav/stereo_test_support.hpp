@@ -5,6 +5,7 @@
 // stereograms of a background plane and an optional foreground square.
 
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/nav/stereo/stereo.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -114,6 +115,15 @@ inline double share_within(const imaging::Image<float>& estimate,
       good += std::isfinite(e) && std::fabs(e - truth(x, y)) <= tolerance ? 1 : 0;
     }
   return scored == 0 ? 0.0 : static_cast<double>(good) / static_cast<double>(scored);
+}
+
+/// Options for the dot scenes: their disparities (6 and 14 px by default) searched up to 24,
+/// without the ground prior (a dot scene has no ground).
+inline StereoOptions dot_scene_options() {
+  StereoOptions options;
+  options.max_disparity = 24;
+  options.ground_prior = false;
+  return options;
 }
 
 } // namespace marsokhod::nav::testing

@@ -17,16 +17,10 @@ using testing::DotScene;
 using testing::make_dot_pair;
 using testing::share_within;
 
-StereoOptions scene_options() {
-  StereoOptions options;
-  options.max_disparity = 24;
-  options.ground_prior = false;
-  return options;
-}
-
 TEST(StereoMatcher, RecoversARandomDotStereogramWithinOnePixel) {
   const DotPair pair = make_dot_pair(DotScene{});
-  const StereoResult result = match_stereo(pair.left.view(), pair.right.view(), scene_options());
+  const StereoResult result =
+      match_stereo(pair.left.view(), pair.right.view(), testing::dot_scene_options());
   ASSERT_TRUE(result.reason.empty()) << result.reason;
   EXPECT_GT(share_within(result.disparity, pair.disparity, pair.seen, 1.0F), 0.98);
 }
@@ -35,14 +29,16 @@ TEST(StereoMatcher, StillMatchesWhenTheRightCameraHasAnotherGainAndOffset) {
   const DotPair pair = make_dot_pair(DotScene{});
   // A darker right camera with a raised black level: a * I + b spans 40..193.
   const imaging::Image<std::uint8_t> right = testing::gain_offset(pair.right, 0.6, 40.0);
-  const StereoResult result = match_stereo(pair.left.view(), right.view(), scene_options());
+  const StereoResult result =
+      match_stereo(pair.left.view(), right.view(), testing::dot_scene_options());
   EXPECT_GT(share_within(result.disparity, pair.disparity, pair.seen, 1.0F), 0.98);
 }
 
 TEST(StereoMatcher, TheLeftRightCheckMarksTheBandTheSquareHidesFromTheRightCamera) {
   const DotScene scene;
   const DotPair pair = make_dot_pair(scene);
-  const StereoResult result = match_stereo(pair.left.view(), pair.right.view(), scene_options());
+  const StereoResult result =
+      match_stereo(pair.left.view(), pair.right.view(), testing::dot_scene_options());
   // The occluded band: foreground - background = 8 columns left of the square, on its rows.
   const int band = scene.foreground - scene.background;
   long occluded = 0;
@@ -67,7 +63,7 @@ TEST(StereoMatcher, TheLeftRightCheckMarksTheBandTheSquareHidesFromTheRightCamer
 TEST(StereoMatcher, FillGivesTheOccludedBandTheBackgroundAndNoneLeavesItUnknown) {
   const DotScene scene;
   const DotPair pair = make_dot_pair(scene);
-  StereoOptions options = scene_options();
+  StereoOptions options = testing::dot_scene_options();
   const StereoResult filled = match_stereo(pair.left.view(), pair.right.view(), options);
   options.fill = FillPolicy::none;
   const StereoResult raw = match_stereo(pair.left.view(), pair.right.view(), options);
@@ -83,10 +79,11 @@ TEST(StereoMatcher, FillGivesTheOccludedBandTheBackgroundAndNoneLeavesItUnknown)
 
 TEST(StereoMatcher, SameInputsGiveIdenticalResultsWhateverTheMeter) {
   const DotPair pair = make_dot_pair(DotScene{});
-  const StereoResult first = match_stereo(pair.left.view(), pair.right.view(), scene_options());
+  const StereoResult first =
+      match_stereo(pair.left.view(), pair.right.view(), testing::dot_scene_options());
   CountingMeter counting;
   const StereoResult counted =
-      match_stereo(pair.left.view(), pair.right.view(), scene_options(), counting);
+      match_stereo(pair.left.view(), pair.right.view(), testing::dot_scene_options(), counting);
   EXPECT_EQ(first.disparity, counted.disparity);
   EXPECT_EQ(first.valid, counted.valid);
   EXPECT_GT(counting.count(Work::match_candidate), 0U);

@@ -44,13 +44,6 @@ using testing::DotPair;
 using testing::DotScene;
 using testing::make_dot_pair;
 
-StereoOptions scene_options() {
-  StereoOptions options;
-  options.max_disparity = 24;
-  options.ground_prior = false;
-  return options;
-}
-
 // A meter behind the virtual interface, as the emulator will plug in.
 class RecordingMeter final : public DynamicMeter {
 public:
@@ -67,7 +60,7 @@ TEST(StereoWork, AWiderBandReportsTheExtraCandidatesItEvaluates) {
   scene.background = 8;
   scene.square_size = 0;
   const DotPair pair = make_dot_pair(scene);
-  StereoOptions options = scene_options();
+  StereoOptions options = testing::dot_scene_options();
   options.pyramid_levels = 2;
   options.search_band = 1;
   CountingMeter narrow;
@@ -93,10 +86,10 @@ TEST(StereoWork, AWiderBandReportsTheExtraCandidatesItEvaluates) {
 TEST(StereoWork, TheDynamicMeterSeesWhatTheCountingMeterSees) {
   const DotPair pair = make_dot_pair(DotScene{});
   CountingMeter counting;
-  match_stereo(pair.left.view(), pair.right.view(), scene_options(), counting);
+  match_stereo(pair.left.view(), pair.right.view(), testing::dot_scene_options(), counting);
   RecordingMeter recording;
   DynamicMeter& dynamic = recording;
-  match_stereo(pair.left.view(), pair.right.view(), scene_options(), dynamic);
+  match_stereo(pair.left.view(), pair.right.view(), testing::dot_scene_options(), dynamic);
   for (std::size_t kind = 0; kind < kWorkKinds; ++kind)
     EXPECT_EQ(recording.counts.count(static_cast<Work>(kind)),
               counting.count(static_cast<Work>(kind)))
@@ -111,8 +104,8 @@ TEST(StereoMemory, EveryBufferComesFromTheCallersResource) {
   std::pmr::monotonic_buffer_resource memory(arena.get(), std::size_t{16} << 20,
                                              std::pmr::null_memory_resource());
   const long before = global_allocations.load();
-  const StereoResult result =
-      match_stereo(pair.left.view(), pair.right.view(), scene_options(), null_meter, &memory);
+  const StereoResult result = match_stereo(pair.left.view(), pair.right.view(),
+                                           testing::dot_scene_options(), null_meter, &memory);
   EXPECT_EQ(global_allocations.load() - before, 0);
   EXPECT_GT(result.valid_pixels, 0U);
   EXPECT_EQ(result.disparity.get_allocator().resource(), &memory);
@@ -122,9 +115,9 @@ TEST(StereoMemory, TooLittleMemoryThrowsBadAlloc) {
   const DotPair pair = make_dot_pair(DotScene{});
   auto arena = std::make_unique<std::byte[]>(20000);
   std::pmr::monotonic_buffer_resource memory(arena.get(), 20000, std::pmr::null_memory_resource());
-  EXPECT_THROW(
-      match_stereo(pair.left.view(), pair.right.view(), scene_options(), null_meter, &memory),
-      std::bad_alloc);
+  EXPECT_THROW(match_stereo(pair.left.view(), pair.right.view(), testing::dot_scene_options(),
+                            null_meter, &memory),
+               std::bad_alloc);
 }
 
 // Expects std::invalid_argument whose message contains `fragment`.
@@ -141,12 +134,13 @@ void expect_refused(Action action, const std::string& fragment) {
 TEST(StereoInput, ImagesOfDifferentSizesAreRefused) {
   const imaging::Image<std::uint8_t> left = testing::random_dots(64, 48, 1);
   const imaging::Image<std::uint8_t> right = testing::random_dots(64, 40, 2);
-  expect_refused([&] { match_stereo(left.view(), right.view(), scene_options()); }, "64x40");
+  expect_refused([&] { match_stereo(left.view(), right.view(), testing::dot_scene_options()); },
+                 "64x40");
 }
 
 TEST(StereoInput, ImagesTooSmallForThePyramidAreRefused) {
   const imaging::Image<std::uint8_t> image = testing::random_dots(30, 30, 3);
-  StereoOptions options = scene_options();
+  StereoOptions options = testing::dot_scene_options();
   options.max_disparity = 8;
   options.pyramid_levels = 3;
   expect_refused([&] { match_stereo(image.view(), image.view(), options); }, "too small");
@@ -157,19 +151,20 @@ TEST(StereoInput, ImagesTooSmallForThePyramidAreRefused) {
 
 TEST(StereoInput, BadOptionsAndColourImagesAreRefused) {
   const imaging::Image<std::uint8_t> image = testing::random_dots(64, 48, 4);
-  StereoOptions options = scene_options();
+  StereoOptions options = testing::dot_scene_options();
   options.min_disparity = -1;
   expect_refused([&] { match_stereo(image.view(), image.view(), options); }, "min_disparity");
-  options = scene_options();
+  options = testing::dot_scene_options();
   options.penalties.large_step = 300;
   expect_refused([&] { match_stereo(image.view(), image.view(), options); }, "penalties");
   const imaging::Image<std::uint8_t> colour(64, 48, 3);
-  expect_refused([&] { match_stereo(colour.view(), colour.view(), scene_options()); }, "grey");
+  expect_refused([&] { match_stereo(colour.view(), colour.view(), testing::dot_scene_options()); },
+                 "grey");
 }
 
 TEST(StereoInput, UnseenColumnsMustGiveOneCountPerRow) {
   const imaging::Image<std::uint8_t> image = testing::random_dots(64, 48, 6);
-  StereoOptions options = scene_options();
+  StereoOptions options = testing::dot_scene_options();
   // Arrays, not vectors: this file replaces the global allocation functions.
   const std::array<std::int16_t, 48> counts{};
   options.unseen_columns = std::span<const std::int16_t>(counts).first(47);
@@ -183,7 +178,8 @@ TEST(StereoInput, UniformImagesGiveNoValidPixelAndSayWhy) {
   for (std::uint8_t grey : {std::uint8_t{0}, std::uint8_t{255}}) {
     const imaging::Image<std::uint8_t> uniform(64, 48, 1, grey);
     for (const auto& [left, right] : {std::pair{&uniform, &dots}, std::pair{&dots, &uniform}}) {
-      const StereoResult result = match_stereo(left->view(), right->view(), scene_options());
+      const StereoResult result =
+          match_stereo(left->view(), right->view(), testing::dot_scene_options());
       EXPECT_EQ(result.valid_pixels, 0U);
       EXPECT_NE(result.reason.find("uniform"), std::string::npos) << result.reason;
       EXPECT_TRUE(std::isinf(result.disparity(10, 10)));

@@ -44,7 +44,12 @@ TEST(MemoryPlan, BuffersFollowTheImageSizeAndThePyramid) {
   // The seeable disparity (4 B), the validity (1 B) and four REAL32 terrain maps.
   EXPECT_EQ(process(node, "range").buffer_bytes(), 128U * 128U * (4 + 1 + 16));
   EXPECT_EQ(process(node, "acquire").buffer_bytes(), 16384U);
-  EXPECT_EQ(plan.band_rows, 128);
+  // Matching keeps its inputs, the coarser layer's result (64x64, 4 B + 1 B) and one band of
+  // 8 matched rows (4 B + 1 B); refine the whole original layer on its way to range.
+  EXPECT_EQ(process(node, "matching").buffer_bytes(),
+            3 * 16384U + 4096U * 5 + 8U * 128U * 5);
+  EXPECT_EQ(process(node, "refine").buffer_bytes(), 128U * 128U * (1 + 4 + 1 + 1 + 4));
+  EXPECT_EQ(plan.band_rows, 8);
 }
 
 TEST(MemoryPlan, NodeFiguresAddCodeWorkspacesAndThePeakHandOver) {
@@ -75,6 +80,8 @@ TEST(MemoryPlan, OnboardModulesDoNotHoldTheWholeImageStages) {
   ASSERT_EQ(plan.nodes.size(), 2U); // the cold spares run nothing
   EXPECT_EQ(plan.nodes[0].node, "module0");
   EXPECT_EQ(plan.nodes[1].node, "module1");
+  // The original layer matched band by band: module0 holds the matching half.
+  EXPECT_TRUE(plan.nodes[0].fits());
   EXPECT_FALSE(plan.nodes[1].fits()); // four REAL32 terrain maps alone are 256 KB
   EXPECT_FALSE(plan.fits());
   // With 1 MB per module (a what-if) the same plan fits.

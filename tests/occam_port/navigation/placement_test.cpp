@@ -127,10 +127,11 @@ TEST_F(PlacementFile, ShippedOnboardPlacementPutsStereoOnModule0AndTheRestOnModu
   EXPECT_EQ(placement.source, file.string());
   EXPECT_EQ(placement.platform, "onboard");
   EXPECT_FALSE(placement.description.empty());
-  ASSERT_EQ(placement.places.size(), 9U);
+  ASSERT_EQ(placement.places.size(), 10U);
   for (const std::string process : {"acquire", "features", "matching"})
     EXPECT_EQ(placement.node_of(process), "module0") << process;
-  for (const std::string process : {"range", "zones", "path", "drive", "motion", "telemetry"})
+  for (const std::string process :
+       {"refine", "range", "zones", "path", "drive", "motion", "telemetry"})
     EXPECT_EQ(placement.node_of(process), "module1") << process;
   EXPECT_EQ(placement.places.front().process, "acquire"); // file order
   EXPECT_GT(placement.places.front().line, 0);
@@ -140,7 +141,7 @@ TEST_F(PlacementFile, ShippedPcCardPlacementPutsEveryProcessOnTheCard) {
   const Placement placement = load_placement(kPlatforms / "placements" / "pc-card.toml", pc_card(),
                                              navigation_program_shape());
   EXPECT_EQ(placement.platform, "pc-card");
-  ASSERT_EQ(placement.places.size(), 9U);
+  ASSERT_EQ(placement.places.size(), 10U);
   for (const std::string& process : navigation_program_shape().processes)
     EXPECT_EQ(placement.node_of(process), "card") << process;
 }
@@ -369,7 +370,7 @@ TEST_F(PlacementFile, ProcessPlacedTwiceNamesBothLines) {
 
 TEST_F(PlacementFile, ProcessOfTheProgramNotPlacedIsAnErrorAtThePlacementTable) {
   Places places = onboard_split();
-  places.erase(places.begin() + 4); // zones
+  places.erase(places.begin() + 5); // zones
   places.pop_back();                // telemetry
   const PlacementError error =
       expect_error("# two missing\n" + placement_text("onboard", places), onboard());
@@ -380,11 +381,11 @@ TEST_F(PlacementFile, ProcessOfTheProgramNotPlacedIsAnErrorAtThePlacementTable) 
 
 TEST_F(PlacementFile, ChannelBetweenUnwiredNodesIsAnErrorAtTheLaterPlacedProcess) {
   Places places = bench_split();
-  places[3].second = "c"; // range: matching's disparity would go from a to c
+  places[3].second = "c"; // refine: matching's bands would go from a to c
   const PlacementError error = expect_error(placement_text("bench", places), bench());
   EXPECT_EQ(error.line(), 14); // entry 3's node: 5 + 3 * 3
   EXPECT_EQ(error.key(), "process[3].node");
-  EXPECT_TRUE(says(error, "channel 'disparity' from matching (on a) to range (on c) has no "
+  EXPECT_TRUE(says(error, "channel 'matched' from matching (on a) to refine (on c) has no "
                           "route: no wire joins a and c"))
       << error.what();
 }
@@ -393,10 +394,10 @@ TEST_F(PlacementFile, TwoChannelsOnOneLinkDirectionAreAnErrorAtTheLaterPlacedPro
   Places places = bench_split();
   places[1].second = "b"; // features on b: images go from a to b, features from b back to a
   const PlacementError error = expect_error(placement_text("bench", places), bench());
-  // disparity (matching on a -> range on b) is the second channel from a to b.
-  EXPECT_EQ(error.line(), 14); // entry 3 (range)'s node: 5 + 3 * 3
+  // matched (matching on a -> refine on b) is the second channel from a to b.
+  EXPECT_EQ(error.line(), 14); // entry 3 (refine)'s node: 5 + 3 * 3
   EXPECT_EQ(error.key(), "process[3].node");
-  EXPECT_TRUE(says(error, "channels 'images' and 'disparity' would both need the link from a to b"))
+  EXPECT_TRUE(says(error, "channels 'images' and 'matched' would both need the link from a to b"))
       << error.what();
   EXPECT_TRUE(says(error, "one channel on each direction of a link")) << error.what();
 }
@@ -404,11 +405,11 @@ TEST_F(PlacementFile, TwoChannelsOnOneLinkDirectionAreAnErrorAtTheLaterPlacedPro
 TEST_F(PlacementFile, ChannelOverABrokenWireIsAnErrorNamingTheWire) {
   Places places = bench_split();
   // motion placed first, drive later: the later one is reported, whichever end it is.
-  std::swap(places[6], places[7]);
-  places[6].second = "c";
+  std::swap(places[7], places[8]);
+  places[7].second = "c";
   const PlacementError error = expect_error(placement_text("bench", places), bench());
-  EXPECT_EQ(error.line(), 26); // entry 7 (drive)'s node: 5 + 3 * 7
-  EXPECT_EQ(error.key(), "process[7].node");
+  EXPECT_EQ(error.line(), 29); // entry 8 (drive)'s node: 5 + 3 * 8
+  EXPECT_EQ(error.key(), "process[8].node");
   EXPECT_TRUE(says(error, "channel 'commands' from drive (on b) to motion (on c) has no route"))
       << error.what();
   EXPECT_TRUE(says(error, "the wire joining b and c")) << error.what();

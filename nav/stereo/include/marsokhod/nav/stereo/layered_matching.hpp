@@ -7,6 +7,7 @@
 #include "marsokhod/nav/work/work.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory_resource>
 #include <optional>
 #include <string>
@@ -21,6 +22,30 @@ std::optional<std::string> uniform_pair_reason(imaging::ImageView<const std::uin
 StereoResult unmatched_stereo(int width, int height, std::string reason,
                               std::pmr::memory_resource* memory);
 
+/// Rows per band of the matcher: the scan lines its dynamic programme runs side by side.
+inline constexpr int kMatchedBandRows = 8;
+
+/// A band of the original layer's rows as matched and checked, before the fill and the median:
+/// rows first_row .. first_row + disparity.height() - 1, the disparity +inf where unreliable.
+struct MatchedBand {
+  int first_row = 0;
+  imaging::ImageView<const float> disparity;
+  imaging::ImageView<const std::uint8_t> valid;
+};
+
+/// Takes the original layer's bands as they are matched (the view is reused for the next band).
+using MatchedBandSink = std::function<void(const MatchedBand&)>;
+
+/// What is left of the original layer once all its bands are in: the pixels the check rejected
+/// filled (options.fill) and the 3x3 median (options.median, when something was filled in).
+/// LayeredMatching does it itself unless it hands the layer on band by band. Instantiated for
+/// NullMeter, CountingMeter and DynamicMeter.
+template <class Meter>
+void finish_original_layer(imaging::Image<float>& disparity,
+                           imaging::ImageView<const std::uint8_t> valid,
+                           const StereoOptions& options, Meter& meter,
+                           std::pmr::memory_resource* memory);
+
 /// match_stereo's walk down the pyramid, given one layer at a time, coarsest first, with the
 /// layer's features made elsewhere: match_stereo drives it with the features it makes itself,
 /// the occam program with the features its features process sends. Each layer is matched,
@@ -29,9 +54,12 @@ StereoResult unmatched_stereo(int width, int height, std::string reason,
 class LayeredMatching {
 public:
   /// The pair's size and the options are checked as match_stereo checks them
-  /// (std::invalid_argument). Every buffer comes from `memory`.
+  /// (std::invalid_argument). Every buffer comes from `memory`. With `bands` (which must
+  /// outlive the walk), the original layer is not kept: each of its bands goes to `bands` as
+  /// soon as it is matched, and finish_original_layer() is left to whoever assembles them (the
+  /// coarser layers, which guide the next, are kept whole either way).
   LayeredMatching(int width, int height, const StereoOptions& options,
-                  std::pmr::memory_resource* memory);
+                  std::pmr::memory_resource* memory, const MatchedBandSink* bands = nullptr);
 
   int levels() const { return levels_; }
   /// The layer the next match_layer() call must be given; -1 once finished.
@@ -46,7 +74,9 @@ public:
   void match_layer(imaging::ImageView<const std::uint8_t> left, const LayerFeatures& left_features,
                    const LayerFeatures& right_features, Meter& meter);
 
-  /// The finished walk's result (std::logic_error before the walk is finished).
+  /// The finished walk's result (std::logic_error before the walk is finished). When the
+  /// original layer went out band by band, the disparity and validity are empty, also for a
+  /// failed walk: the rest (valid pixels, layers, the reason) is what the assembler needs.
   StereoResult take_result();
 
 private:
@@ -54,6 +84,7 @@ private:
   int height_;
   StereoOptions options_;
   std::pmr::memory_resource* memory_;
+  const MatchedBandSink* bands_;
   int levels_;
   int next_level_;
   std::pmr::vector<StereoLayerStats> stats_;

@@ -50,7 +50,7 @@ struct NodePlan {
 struct MemoryPlan {
   int image_width = 0;
   int image_height = 0;
-  int band_rows = 0; ///< rows per band; image_height: one band
+  int band_rows = 0; ///< rows per band of the original layer's matching and its hand-over
   std::vector<NodePlan> nodes;
   bool fits() const;
 };

@@ -1,0 +1,41 @@
+// The bodies of the navigation program's processes and the messages they share.
+#pragma once
+
+// The processes' bodies, in two files: the stereo half (features, matching, refine) and the rest
+// (private to the navigation room).
+
+#include "navigation/cycle_messages.hpp"
+#include "navigation/cycle_state.hpp"
+
+#include "marsokhod/occam_port/navigation/memory_plan.hpp"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace marsokhod::occam_port::detail {
+
+using U8Image = imaging::Image<std::uint8_t>;
+using FloatImage = imaging::Image<float>;
+
+inline std::string image_what(std::string_view what, int width, int height, int bytes) {
+  return buffer_name(what, height, width, bytes);
+}
+
+inline U8Image receive_bytes(ProcessContext& c, BlockChannel& channel, std::string_view what,
+                             int width, int height) {
+  c.doing(image_what(what, width, height, 1));
+  return receive_image<std::uint8_t>(channel, width, height, c.memory());
+}
+
+inline FloatImage receive_floats(ProcessContext& c, BlockChannel& channel, std::string_view what) {
+  const CycleState& s = c.cycle();
+  c.doing(image_what(what, s.width, s.height, 4));
+  return receive_image<float>(channel, s.width, s.height, c.memory());
+}
+
+void features(ProcessContext& c);
+void matching(ProcessContext& c);
+void refine(ProcessContext& c);
+
+} // namespace marsokhod::occam_port::detail
