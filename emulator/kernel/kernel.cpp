@@ -73,6 +73,13 @@ bool Kernel::advance_to_next_step(Tick at) {
   return true;
 }
 
+Tick Kernel::inline_step_bound() const {
+  if (current_ != nullptr || stop_requested_ || impl_->failure)
+    return now_;
+  const Tick after_limit = impl_->limit == kNever ? kNever : impl_->limit + 1;
+  return std::min(impl_->events.next_time(), after_limit);
+}
+
 std::size_t Kernel::pending_events() const {
   return impl_->events.foreground();
 }

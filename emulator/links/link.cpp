@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -104,13 +106,50 @@ void Link::on_event(std::uint64_t /*tag*/) {
   Tick next = framing_.next_time();
   for (;;) {
     while (next <= kernel_->now()) {
-      handle(framing_.step());
+      const LinkStep step = framing_.step();
+      handle(step);
+      if (step.kind == LinkStep::Kind::data_start)
+        jump_stream(step.end);
       next = framing_.next_time();
     }
     if (next == kNever || !kernel_->advance_to_next_step(next))
       break;
   }
   schedule_next(next);
+}
+
+// A message's bytes follow one another at one period; once the framing finds the period, the
+// whole periods before the message's last byte, and before anything else is due, are jumped:
+// the bytes land in the input as the packet steps would have put them there.
+void Link::jump_stream(int sender) {
+  const std::optional<Tick> period = framing_.stream_period(sender);
+  if (!period || *period <= 0)
+    return;
+  LinkPort::Transfer& out = ports_[sender].output_;
+  LinkPort::Transfer& in = ports_[1 - sender].input_;
+  if (!out.active || !in.active || out.started >= out.out.size() || in.done >= in.in.size())
+    return;
+  const Tick now = kernel_->now();
+  const Tick bound = kernel_->inline_step_bound();
+  if (bound <= now)
+    return;
+  const std::uint64_t in_time = static_cast<std::uint64_t>((bound - 1 - now) / *period);
+  const std::uint64_t bytes =
+      std::min({framing_.skippable_bytes(sender), in_time,
+                static_cast<std::uint64_t>(out.out.size() - out.started - 1),
+                static_cast<std::uint64_t>(in.in.size() - in.done - 1)});
+  if (bytes == 0 || !kernel_->advance_to_next_step(now + static_cast<Tick>(bytes) * *period))
+    return;
+  // The byte on the wire arrives first, then the next bytes - 1; the last one jumped is then
+  // on the wire.
+  in.in[in.done] = on_wire_[sender];
+  std::copy_n(out.out.begin() + static_cast<std::ptrdiff_t>(out.started), bytes - 1,
+              in.in.begin() + static_cast<std::ptrdiff_t>(in.done + 1));
+  on_wire_[sender] = out.out[out.started + bytes - 1];
+  out.started += bytes;
+  out.done += bytes;
+  in.done += bytes;
+  framing_.skip_stream(sender, bytes, *period);
 }
 
 void Link::handle(const LinkStep& step) {

@@ -32,11 +32,13 @@ LinkTiming LinkTiming::from(const LinkTimingSpec& spec, int mbps) {
 LinkFraming::LinkFraming(const LinkTiming& timing) : timing_(timing) {}
 
 void LinkFraming::offer_output(int end, Tick now, std::uint64_t bytes) {
+  ++generation_;
   now_ = std::max(now_, now);
   ends_[end].queued += bytes;
 }
 
 bool LinkFraming::offer_input(int end, Tick now, std::uint64_t bytes) {
+  ++generation_;
   now_ = std::max(now_, now);
   End& receiver = ends_[end];
   receiver.accept_budget += bytes;
@@ -69,6 +71,7 @@ void LinkFraming::accept_in_flight(int receiver) {
 }
 
 void LinkFraming::reset_end(int end, Tick now, bool alive) {
+  ++generation_;
   now_ = std::max(now_, now);
   const Tick wire_free = now_;
   ends_[end] = End{};

@@ -1,5 +1,7 @@
 // Link handshake timing: data and acknowledge packets at a given speed.
 
+#include "emulator/links/hand_link_timing.hpp"
+
 #include "marsokhod/emulator/links/link_framing.hpp"
 
 #include <gtest/gtest.h>
@@ -11,18 +13,7 @@ namespace {
 
 using Kind = LinkStep::Kind;
 
-// Hand-made timing at 10 Mbit/s (100 ns per bit): 11-bit data, 2-bit ack, ack 5.5 bits after
-// the start bit, next byte 300 ns after the end of the ack.
-LinkTiming hand_timing() {
-  LinkTiming t;
-  t.bit = 100'000;
-  t.data_packet = 1'100'000;
-  t.ack_packet = 200'000;
-  t.ack_delay = 550'000;
-  t.ack_turnaround = 300'000;
-  t.gap = 0;
-  return t;
-}
+using link_testing::hand_timing;
 
 struct Transfer {
   Tick last_ack = 0;                   // when the last sender saw its last acknowledge

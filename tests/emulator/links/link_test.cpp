@@ -1,5 +1,7 @@
 // T805 links: transfers, handshake timing, dead ends and broken wires.
 
+#include "emulator/links/hand_link_timing.hpp"
+
 #include "marsokhod/emulator/links/link.hpp"
 #include "marsokhod/emulator/links/link_network.hpp"
 #include "marsokhod/emulator/node/node.hpp"
@@ -15,17 +17,7 @@ namespace {
 
 const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
 
-// Hand-made timing at 10 Mbit/s: 1.1 us data packets, 0.2 us acks sent 0.55 us after the start
-// bit, next byte 0.3 us after the ack: wire-limited one way (ack loop 1.05 us < 1.1 us).
-LinkTiming hand_timing() {
-  LinkTiming t;
-  t.bit = 100'000;
-  t.data_packet = 1'100'000;
-  t.ack_packet = 200'000;
-  t.ack_delay = 550'000;
-  t.ack_turnaround = 300'000;
-  return t;
-}
+using link_testing::hand_timing;
 
 std::vector<std::byte> pattern(std::size_t size) {
   std::vector<std::byte> bytes(size);

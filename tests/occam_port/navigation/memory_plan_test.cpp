@@ -46,8 +46,7 @@ TEST(MemoryPlan, BuffersFollowTheImageSizeAndThePyramid) {
   EXPECT_EQ(process(node, "acquire").buffer_bytes(), 16384U);
   // Matching keeps its inputs, the coarser layer's result (64x64, 4 B + 1 B) and one band of
   // 8 matched rows (4 B + 1 B); refine the whole original layer on its way to range.
-  EXPECT_EQ(process(node, "matching").buffer_bytes(),
-            3 * 16384U + 4096U * 5 + 8U * 128U * 5);
+  EXPECT_EQ(process(node, "matching").buffer_bytes(), 3 * 16384U + 4096U * 5 + 8U * 128U * 5);
   EXPECT_EQ(process(node, "refine").buffer_bytes(), 128U * 128U * (1 + 4 + 1 + 1 + 4));
   EXPECT_EQ(plan.band_rows, 8);
 }

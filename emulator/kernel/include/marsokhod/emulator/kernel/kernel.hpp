@@ -131,6 +131,9 @@ public:
   /// the handler takes its next step at once, exactly when the queue would have run it, without
   /// a trip through the queue. Returns false, changing nothing, otherwise (and inside a process).
   bool advance_to_next_step(Tick at);
+  /// The first time advance_to_next_step() refuses: the next other event's, or just past the
+  /// run's limit; now() when it refuses any step.
+  Tick inline_step_bound() const;
   /// Pending foreground events.
   std::size_t pending_events() const;
 

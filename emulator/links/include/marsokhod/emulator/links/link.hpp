@@ -119,6 +119,7 @@ private:
   /// reschedule() for a next step time already worked out.
   void schedule_next(Tick next);
   void handle(const LinkStep& step);
+  void jump_stream(int sender);
   void on_data_start(int sender);
   void on_data_end(int sender, bool accepted);
   void on_ack_end(int sender);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 
 namespace marsokhod::emulator {
 
@@ -69,12 +70,21 @@ public:
   /// wire from the other end are lost; that end's sender waits for an acknowledge forever.
   void reset_end(int end, Tick now, bool alive);
   /// Forgets the bytes `end` has not started sending yet (its process gave up the output).
-  void withdraw_output(int end) { ends_[end].queued = 0; }
+  void withdraw_output(int end) {
+    ends_[end].queued = 0;
+    ++generation_;
+  }
   /// Forgets how many bytes `end` still wanted (its process gave up the input).
-  void withdraw_input(int end) { ends_[end].accept_budget = 0; }
+  void withdraw_input(int end) {
+    ends_[end].accept_budget = 0;
+    ++generation_;
+  }
   bool alive(int end) const { return ends_[end].alive; }
   /// A broken cable: packets are sent but never arrive.
-  void set_broken(bool broken) { broken_ = broken; }
+  void set_broken(bool broken) {
+    broken_ = broken;
+    ++generation_;
+  }
   bool broken() const { return broken_; }
 
   /// Time of the next step, kNever when nothing can happen without new offers.
@@ -82,6 +92,21 @@ public:
   /// Performs the earliest step (time order; at one instant packet ends, then acknowledges,
   /// then data, end 0 before end 1). Returns Kind::none when nothing is pending.
   LinkStep step();
+
+  /// Called just after `sender` started a data packet. A one-way stream repeats itself byte
+  /// after byte: when the machine stands now where it stood at that end's previous data start,
+  /// its times shifted by one byte period and one byte fewer to send and to take (with nothing
+  /// offered, withdrawn, reset or broken in between), returns that period; otherwise nothing.
+  /// Either way this data start becomes the one the next call compares with.
+  std::optional<Tick> stream_period(int sender);
+  /// Jumps `bytes` byte periods of `sender`'s stream at once, as that many data packets,
+  /// acknowledges and next data starts would: every pending time moves on `bytes * period`.
+  /// Only after stream_period() gave `period`, and only for fewer bytes than are left to send
+  /// and to take.
+  void skip_stream(int sender, std::uint64_t bytes, Tick period);
+  /// Bytes a skip_stream() may jump for `sender`: one fewer than it has left to send and than
+  /// its peer has left to take, so that the last byte of either is stepped.
+  std::uint64_t skippable_bytes(int sender) const;
 
 private:
   struct End {
@@ -101,8 +126,19 @@ private:
     bool holding = false; ///< one unacknowledged byte in the receive buffer
     bool ack_owed = false;
     Tick ack_ready = kNever; ///< earliest start of the owed acknowledge
+
+    bool operator==(const End&) const = default;
   };
 
+  /// The machine as seen from a data start of one end, times relative to it (a past time
+  /// that only bounds a later one from below counts as now).
+  struct Phase {
+    std::array<End, 2> ends{};
+    std::uint64_t generation = 0;
+    Tick at = 0;
+    bool valid = false;
+  };
+  Phase phase_at_now() const;
   Tick data_start_time(int end) const;
   Tick ack_start_time(int end) const;
   void accept_in_flight(int receiver);
@@ -115,6 +151,9 @@ private:
   std::array<End, 2> ends_{};
   Tick now_ = 0;
   bool broken_ = false;
+  /// Counts the offers, withdrawals, resets and breaks: a stream repeats itself only between two.
+  std::uint64_t generation_ = 0;
+  std::array<Phase, 2> last_data_start_{};
 };
 
 // Asked for after every packet step: inline.
