@@ -19,6 +19,15 @@ double fraction(emulator::Tick part, emulator::Tick whole) {
   return whole > 0 ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
 }
 
+// Units of each nav::Work kind, by name.
+nlohmann::ordered_json work_json(const nav::CountingMeter& work) {
+  nlohmann::ordered_json units = nlohmann::ordered_json::object();
+  for (std::size_t k = 0; k < nav::kWorkKinds; ++k)
+    units[std::string(nav::to_string(static_cast<nav::Work>(k)))] =
+        work.count(static_cast<nav::Work>(k));
+  return units;
+}
+
 nlohmann::ordered_json plan_json(const occam_port::MemoryPlan& plan) {
   nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
   for (const occam_port::NodePlan& node : plan.nodes) {
@@ -123,11 +132,8 @@ nlohmann::ordered_json emulation_json(const CycleEmulation& run, const Emulation
   json["found"] = run.result && run.result->found();
   if (run.result && !run.result->found())
     json["reason"] = run.result->reason();
-  nlohmann::ordered_json work = nlohmann::ordered_json::object();
-  for (std::size_t k = 0; k < nav::kWorkKinds; ++k)
-    work[std::string(nav::to_string(static_cast<nav::Work>(k)))] =
-        run.work.count(static_cast<nav::Work>(k));
-  json["work"] = work;
+  json["work"] = work_json(run.work);
+  json["recomputed_work"] = work_json(run.recomputed_work);
   json["context_switches"] = run.context_switches;
   nlohmann::ordered_json files = nlohmann::ordered_json::object();
   for (const auto& [key, path] : outputs)

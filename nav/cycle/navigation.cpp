@@ -120,10 +120,10 @@ StereoOptions rover_stereo_options(const imaging::StereoRig& rig, const Navigati
 }
 
 template <class Meter>
-PathPlan plan_cycle_path(const TerrainPoints& terrain, const ZoneMap& zones,
+PathPlan plan_cycle_path(const TerrainRows& terrain, const ZoneMap& zones,
                          const PlannerOptions& options, Meter& meter,
                          std::pmr::memory_resource* memory) {
-  if (terrain.known_pixels == 0) {
+  if (terrain.known_pixels() == 0) {
     PathPlan none{false,
                   "no pixel of the disparity map gives a ground point",
                   {},
@@ -134,6 +134,13 @@ PathPlan plan_cycle_path(const TerrainPoints& terrain, const ZoneMap& zones,
     return none;
   }
   return plan_path(terrain, zones, options, meter, memory);
+}
+
+template <class Meter>
+PathPlan plan_cycle_path(const TerrainPoints& terrain, const ZoneMap& zones,
+                         const PlannerOptions& options, Meter& meter,
+                         std::pmr::memory_resource* memory) {
+  return plan_cycle_path(ResidentTerrain(terrain), zones, options, meter, memory);
 }
 
 void explain_stereo_failure(const std::string& stereo_reason, PathPlan& plan) {
@@ -186,6 +193,8 @@ NavigationResult navigate(imaging::ImageView<const std::uint8_t> left,
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
+  template PathPlan plan_cycle_path<M>(const TerrainRows&, const ZoneMap&, const PlannerOptions&,  \
+                                       M&, std::pmr::memory_resource*);                            \
   template PathPlan plan_cycle_path<M>(const TerrainPoints&, const ZoneMap&,                       \
                                        const PlannerOptions&, M&, std::pmr::memory_resource*);     \
   template NavigationResult navigate<M>(                                                           \

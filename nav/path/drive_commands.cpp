@@ -70,18 +70,28 @@ DrivePlan plan_drive(std::span<const GroundPoint> ground_path, const DriveOption
   return plan;
 }
 
-std::pmr::vector<GroundPoint> ground_path(const TerrainPoints& terrain,
+std::pmr::vector<GroundPoint> ground_path(const TerrainRows& terrain,
                                           std::span<const PixelPoint> path,
                                           std::pmr::memory_resource* memory) {
   std::pmr::vector<GroundPoint> ground(memory);
   ground.reserve(path.size());
   for (const PixelPoint& pixel : path) {
-    if (!terrain.elevation.contains(pixel.x, pixel.y) || !terrain.known(pixel.x, pixel.y))
+    if (!terrain.contains(pixel.x, pixel.y))
       throw std::invalid_argument(fmt::format(
           "plan_drive: path pixel ({}, {}) has no known ground point", pixel.x, pixel.y));
-    ground.push_back({terrain.forward(pixel.x, pixel.y), terrain.left(pixel.x, pixel.y)});
+    const TerrainRows::Row row = terrain.row(pixel.y);
+    if (!row.known(pixel.x))
+      throw std::invalid_argument(fmt::format(
+          "plan_drive: path pixel ({}, {}) has no known ground point", pixel.x, pixel.y));
+    ground.push_back({row.forward[pixel.x], row.left[pixel.x]});
   }
   return ground;
+}
+
+std::pmr::vector<GroundPoint> ground_path(const TerrainPoints& terrain,
+                                          std::span<const PixelPoint> path,
+                                          std::pmr::memory_resource* memory) {
+  return ground_path(ResidentTerrain(terrain), path, memory);
 }
 
 DrivePlan plan_drive(const TerrainPoints& terrain, std::span<const PixelPoint> path,

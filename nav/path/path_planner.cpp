@@ -71,7 +71,7 @@ struct StartChoice {
 // equals the one nearest the heading line, then the lowest and leftmost (a fixed order, so ties
 // are reproducible). None when a step or slope straight in front lies nearer: the rover would
 // run over it on its way to the start.
-StartChoice find_start(const TerrainPoints& terrain, const ZoneMap& zones,
+StartChoice find_start(const TerrainRows& terrain, const ZoneMap& zones,
                        const PlannerOptions& options, int below_row) {
   const float max_range = float_floor(options.start_max_m);
   const float max_offset = float_floor(options.start_lateral_m);
@@ -80,11 +80,11 @@ StartChoice find_start(const TerrainPoints& terrain, const ZoneMap& zones,
   double best_offset = 0.0;
   double nearest_hazard = std::numeric_limits<double>::infinity();
   for (int y = terrain.height() - 1; y >= 0; --y) {
-    if (!row_reaches_start_box(terrain.range.row(y), terrain.left.row(y), terrain.width(),
-                               max_range, max_offset))
+    const TerrainRows::Row row = terrain.row(y);
+    if (!row_reaches_start_box(row.range, row.left, terrain.width(), max_range, max_offset))
       continue;
-    const float* ranges = terrain.range.row(y);
-    const float* lefts = terrain.left.row(y);
+    const float* ranges = row.range;
+    const float* lefts = row.left;
     for (int x = 0; x < terrain.width(); ++x) {
       if (std::abs(lefts[x]) > max_offset || ranges[x] > max_range)
         continue;
@@ -106,18 +106,19 @@ StartChoice find_start(const TerrainPoints& terrain, const ZoneMap& zones,
   return StartChoice{best, std::nullopt};
 }
 
-bool in_target_band(const TerrainPoints& terrain, const PlannerOptions& options, int x, int y) {
-  const double range = terrain.range(x, y);
+bool in_target_band(double range, const PlannerOptions& options) {
   return range >= options.target_min_m && range <= options.target_max_m;
 }
 
 // The highest row holding a traversable pixel of the target band (the sweep stops there).
-std::optional<int> first_target_row(const TerrainPoints& terrain, const ZoneMap& zones,
+std::optional<int> first_target_row(const TerrainRows& terrain, const ZoneMap& zones,
                                     const PlannerOptions& options, int start_row) {
-  for (int y = 0; y <= start_row; ++y)
+  for (int y = 0; y <= start_row; ++y) {
+    const float* ranges = terrain.row(y).range;
     for (int x = 0; x < terrain.width(); ++x)
-      if (zones.traversable(x, y) && in_target_band(terrain, options, x, y))
+      if (zones.traversable(x, y) && in_target_band(ranges[x], options))
         return y;
+  }
   return std::nullopt;
 }
 
@@ -144,7 +145,7 @@ bool row_reaches_band(const float* cost, const float* range, int width, float ne
 // The reachable pixel of the target band with the lowest score. The heading penalty is never
 // negative, so a pixel whose cost alone reaches the best score so far cannot beat it and needs
 // no bearing.
-std::optional<Destination> choose_destination(const TerrainPoints& terrain, const RowSweep& sweep,
+std::optional<Destination> choose_destination(const TerrainRows& terrain, const RowSweep& sweep,
                                               const PlannerOptions& options) {
   const double heading = options.heading_deg * std::numbers::pi / 180.0;
   const float nearest = float_ceil(options.target_min_m);
@@ -152,15 +153,16 @@ std::optional<Destination> choose_destination(const TerrainPoints& terrain, cons
   std::optional<Destination> best;
   for (int y = sweep.first_row; y <= sweep.start.y; ++y) {
     const float* costs = sweep.cost.row(y);
-    if (!row_reaches_band(costs, terrain.range.row(y), terrain.width(), nearest, farthest))
+    const TerrainRows::Row row = terrain.row(y);
+    if (!row_reaches_band(costs, row.range, terrain.width(), nearest, farthest))
       continue;
     for (int x = 0; x < terrain.width(); ++x) {
       const double cost = costs[x];
-      if (!std::isfinite(cost) || !in_target_band(terrain, options, x, y))
+      if (!std::isfinite(cost) || !in_target_band(row.range[x], options))
         continue;
       if (best && cost >= best->score)
         continue;
-      const double bearing = std::atan2(terrain.left(x, y), terrain.forward(x, y));
+      const double bearing = std::atan2(row.left[x], row.forward[x]);
       const double score =
           cost + options.heading_weight * std::abs(wrapped_radians(bearing - heading));
       if (!best || score < best->score)
@@ -188,13 +190,15 @@ std::pmr::vector<PixelPoint> rebuild_path(const RowSweep& sweep, PixelPoint targ
 
 // The highest row holding a pixel of the start box that a sweep reached: a start beyond the
 // pocket the sweep explored lies above it.
-int top_of_reach_in_start_box(const TerrainPoints& terrain, const RowSweep& sweep,
+int top_of_reach_in_start_box(const TerrainRows& terrain, const RowSweep& sweep,
                               const PlannerOptions& options) {
   const float max_offset = float_floor(options.start_lateral_m);
-  for (int y = sweep.first_row; y < sweep.start.y; ++y)
+  for (int y = sweep.first_row; y < sweep.start.y; ++y) {
+    const float* lefts = terrain.row(y).left;
     for (int x = 0; x < terrain.width(); ++x)
-      if (std::isfinite(sweep.cost(x, y)) && std::abs(terrain.left(x, y)) <= max_offset)
+      if (std::isfinite(sweep.cost(x, y)) && std::abs(lefts[x]) <= max_offset)
         return y;
+  }
   return sweep.start.y;
 }
 
@@ -206,7 +210,7 @@ PathPlan not_found(std::string reason, std::pmr::memory_resource* memory) {
 // Sweeps from the nearest start and, while no destination can be reached, from the next start
 // beyond the ground the sweeps reached in front of the rover.
 template <class Meter>
-PathPlan plan_from_starts(const TerrainPoints& terrain, const ZoneMap& zones,
+PathPlan plan_from_starts(const TerrainRows& terrain, const ZoneMap& zones,
                           const PlannerOptions& options, PixelPoint nearest, Meter& meter,
                           std::pmr::memory_resource* memory) {
   std::optional<PixelPoint> start = nearest;
@@ -234,7 +238,7 @@ PathPlan plan_from_starts(const TerrainPoints& terrain, const ZoneMap& zones,
   return not_found(fmt::format("no traversable point {:.1f}-{:.1f} m away can be reached "
                                "from the start {:.2f} m ahead",
                                options.target_min_m, options.target_max_m,
-                               terrain.range(nearest.x, nearest.y)),
+                               terrain.row(nearest.y).range[nearest.x]),
                    memory);
 }
 
@@ -263,8 +267,8 @@ void validate(const PlannerOptions& options) {
 }
 
 template <class Meter>
-PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
-                   const PlannerOptions& options, Meter& meter, std::pmr::memory_resource* memory) {
+PathPlan plan_path(const TerrainRows& terrain, const ZoneMap& zones, const PlannerOptions& options,
+                   Meter& meter, std::pmr::memory_resource* memory) {
   validate(options);
   if (zones.width() != terrain.width() || zones.height() != terrain.height())
     throw std::invalid_argument(fmt::format("plan_path: {}x{} zones for a {}x{} terrain",
@@ -284,7 +288,15 @@ PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
   return plan_from_starts(terrain, zones, options, *nearest.pixel, meter, memory);
 }
 
+template <class Meter>
+PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
+                   const PlannerOptions& options, Meter& meter, std::pmr::memory_resource* memory) {
+  return plan_path(ResidentTerrain(terrain), zones, options, meter, memory);
+}
+
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
+  template PathPlan plan_path<M>(const TerrainRows&, const ZoneMap&, const PlannerOptions&, M&,    \
+                                 std::pmr::memory_resource*);                                      \
   template PathPlan plan_path<M>(const TerrainPoints&, const ZoneMap&, const PlannerOptions&, M&,  \
                                  std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)

@@ -72,10 +72,10 @@ private:
   WideRow here_{};
 };
 
-void widen_terrain(const TerrainPoints& terrain, int y, Span columns, WideRow& row) {
-  const float* forward = terrain.forward.row(y);
-  const float* left = terrain.left.row(y);
-  const float* elevation = terrain.elevation.row(y);
+void widen_terrain(const TerrainRows::Row& points, Span columns, WideRow& row) {
+  const float* forward = points.forward;
+  const float* left = points.left;
+  const float* elevation = points.elevation;
   for (int x = columns.begin; x < columns.end; ++x) {
     row.forward[x] = forward[x];
     row.left[x] = left[x];
@@ -190,14 +190,14 @@ void relax_row(const WideRow& here, const WideRow& below, const std::uint8_t* ac
   }
 }
 
-void check_sweep_arguments(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoint start,
+void check_sweep_arguments(const TerrainRows& terrain, const ZoneMap& zones, PixelPoint start,
                            int first_row) {
   if (zones.width() != terrain.width() || zones.height() != terrain.height())
     throw std::invalid_argument(fmt::format("sweep_rows: {}x{} zones for a {}x{} terrain",
                                             zones.width(), zones.height(), terrain.width(),
                                             terrain.height()));
   if (!zones.zone.contains(start.x, start.y) || !zones.traversable(start.x, start.y) ||
-      !terrain.known(start.x, start.y))
+      !terrain.row(start.y).known(start.x))
     throw std::invalid_argument(
         fmt::format("sweep_rows: start ({}, {}) is not a traversable pixel", start.x, start.y));
   if (first_row < 0 || first_row > start.y)
@@ -208,7 +208,7 @@ void check_sweep_arguments(const TerrainPoints& terrain, const ZoneMap& zones, P
 } // namespace
 
 template <class Meter>
-RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoint start,
+RowSweep sweep_rows(const TerrainRows& terrain, const ZoneMap& zones, PixelPoint start,
                     int first_row, const EdgeWeights& weights, Meter& meter,
                     std::pmr::memory_resource* memory) {
   check_sweep_arguments(terrain, zones, start, first_row);
@@ -220,7 +220,7 @@ RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoi
   const LaneWeights lane_weights(weights);
   SweepBuffers buffers(width, memory);
   const Span whole{0, width};
-  widen_terrain(terrain, start.y, whole, buffers.below());
+  widen_terrain(terrain.row(start.y), whole, buffers.below());
   widen_costs(sweep.cost.row(start.y), width, buffers.below(), buffers.reached());
   Span reach{start.x, start.x + 1};
   // Only the columns next to reached pixels are widened and relaxed: elsewhere the buffers keep
@@ -228,10 +228,11 @@ RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoi
   for (int y = start.y - 1; y >= first_row; --y) {
     const Span columns{std::max(reach.begin - 1, 0), std::min(reach.end + 1, width)};
     const Span read{columns.begin, std::min(columns.end + 1, width)};
-    widen_terrain(terrain, y, read, buffers.here());
+    const TerrainRows::Row points = terrain.row(y);
+    widen_terrain(points, read, buffers.here());
     const std::uint64_t relaxations =
-        mark_active(zones.zone.row(y), zones.zone.channels(), terrain.elevation.row(y),
-                    buffers.reached(), read, buffers.active());
+        mark_active(zones.zone.row(y), zones.zone.channels(), points.elevation, buffers.reached(),
+                    read, buffers.active());
     relax_row(buffers.here(), buffers.below(), buffers.active(), columns, width, lane_weights,
               sweep.cost.row(y), sweep.from.row(y));
     widen_costs(sweep.cost.row(y), width, buffers.here(), buffers.reached());
@@ -242,7 +243,16 @@ RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoi
   return sweep;
 }
 
+template <class Meter>
+RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoint start,
+                    int first_row, const EdgeWeights& weights, Meter& meter,
+                    std::pmr::memory_resource* memory) {
+  return sweep_rows(ResidentTerrain(terrain), zones, start, first_row, weights, meter, memory);
+}
+
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
+  template RowSweep sweep_rows<M>(const TerrainRows&, const ZoneMap&, PixelPoint, int,             \
+                                  const EdgeWeights&, M&, std::pmr::memory_resource*);             \
   template RowSweep sweep_rows<M>(const TerrainPoints&, const ZoneMap&, PixelPoint, int,           \
                                   const EdgeWeights&, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)

@@ -89,7 +89,7 @@ std::uint64_t bin_row(const float* forward, const float* left, const float* elev
 
 } // namespace
 
-GroundGrid::GroundGrid(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> zone,
+GroundGrid::GroundGrid(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> zone,
                        double cell_m, double max_range_m, std::pmr::memory_resource* memory,
                        std::uint64_t& work)
     : cell_(cell_m), width_(terrain.width()),
@@ -112,7 +112,7 @@ GroundGrid::GroundGrid(const TerrainPoints& terrain, imaging::ImageView<const st
   bin(terrain, {b.min_x, b.min_y}, work);
 }
 
-void GroundGrid::bin(const TerrainPoints& terrain, const float (&origin)[2], std::uint64_t& work) {
+void GroundGrid::bin(const TerrainRows& terrain, const float (&origin)[2], std::uint64_t& work) {
   const auto size = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
   highest_.assign(size, -kInfinity);
   lowest_.assign(size, kInfinity);
@@ -122,9 +122,11 @@ void GroundGrid::bin(const TerrainPoints& terrain, const float (&origin)[2], std
   const LatticeAxis across{y0_, cell_, ny_};
   const CellSums sums{highest_.data(), lowest_.data(), sum_.data(), count_.data()};
   std::uint64_t points = 0;
-  for (int y = 0; y < terrain.height(); ++y)
-    points += bin_row(terrain.forward.row(y), terrain.left.row(y), terrain.elevation.row(y), along,
-                      across, origin, terrain.width(), binned_row(y), sums);
+  for (int y = 0; y < terrain.height(); ++y) {
+    const TerrainRows::Row row = terrain.row(y);
+    points += bin_row(row.forward, row.left, row.elevation, along, across, origin, terrain.width(),
+                      binned_row(y), sums);
+  }
   work += 2 * points;
 }
 

@@ -8,7 +8,7 @@
 #include "zones/zone_buffer.hpp"
 
 #include "marsokhod/imaging/image/image.hpp"
-#include "marsokhod/nav/terrain/elevation.hpp"
+#include "marsokhod/nav/terrain/terrain_rows.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -22,9 +22,8 @@ public:
   /// Bins every pixel whose `zone` (channel 0) is not Zone::unknown and that is known and within
   /// `max_range_m`; the grid spans just those points, `cell_m` a side. `work` counts the points
   /// binned.
-  GroundGrid(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> zone,
-             double cell_m, double max_range_m, std::pmr::memory_resource* memory,
-             std::uint64_t& work);
+  GroundGrid(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> zone, double cell_m,
+             double max_range_m, std::pmr::memory_resource* memory, std::uint64_t& work);
 
   int nx() const { return nx_; } ///< cells along the forward axis
   int ny() const { return ny_; } ///< cells along the lateral axis
@@ -54,7 +53,7 @@ public:
   static constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();
 
 private:
-  void bin(const TerrainPoints& terrain, const float (&origin)[2], std::uint64_t& work);
+  void bin(const TerrainRows& terrain, const float (&origin)[2], std::uint64_t& work);
   std::size_t row_start(int y) const {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_);
   }

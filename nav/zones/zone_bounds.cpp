@@ -80,7 +80,7 @@ __m128i widen_four(const std::uint8_t* bytes) {
 
 } // namespace
 
-GroundBounds mark_binned(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> zone,
+GroundBounds mark_binned(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> zone,
                          float max_range, std::int32_t* binned) {
   const int width = terrain.width();
   GroundBounds bounds;
@@ -94,10 +94,11 @@ GroundBounds mark_binned(const TerrainPoints& terrain, imaging::ImageView<const 
 #endif
   for (int y = 0; y < terrain.height(); ++y) {
     const std::uint8_t* judged = zone.row(y);
-    const float* elevation = terrain.elevation.row(y);
-    const float* range = terrain.range.row(y);
-    const float* forward = terrain.forward.row(y);
-    const float* left = terrain.left.row(y);
+    const TerrainRows::Row row = terrain.row(y);
+    const float* elevation = row.elevation;
+    const float* range = row.range;
+    const float* forward = row.forward;
+    const float* left = row.left;
     std::int32_t* out = binned + static_cast<std::ptrdiff_t>(y) * width;
     int x = 0;
 #ifdef __SSE2__

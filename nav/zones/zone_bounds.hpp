@@ -5,7 +5,7 @@
 // ground_grid.cpp): one pass over the terrain, four pixels at a time where SSE2 is there.
 
 #include "marsokhod/imaging/image/image.hpp"
-#include "marsokhod/nav/terrain/elevation.hpp"
+#include "marsokhod/nav/terrain/terrain_rows.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -40,7 +40,7 @@ struct GroundBounds {
 /// `binned`; returns the bounds of the binned points. The order the points are taken in does not
 /// matter: only a tie of +0 and -0 could tell, and the grid's origin and size come out the same
 /// for both.
-GroundBounds mark_binned(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> zone,
+GroundBounds mark_binned(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> zone,
                          float max_range, std::int32_t* binned);
 
 } // namespace marsokhod::nav::detail

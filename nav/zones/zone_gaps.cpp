@@ -13,16 +13,16 @@ constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
 constexpr auto kTraversable = static_cast<std::uint8_t>(Zone::traversable);
 
 // The ends of a gap are close on the ground and at about the same height.
-bool narrow_and_level(const TerrainPoints& terrain, const ZoneOptions& options, int y, int left,
+bool narrow_and_level(const TerrainRows::Row& points, const ZoneOptions& options, int left,
                       int right) {
-  const double gap = std::hypot(terrain.forward(right, y) - terrain.forward(left, y),
-                                terrain.left(right, y) - terrain.left(left, y));
-  const double rise = std::abs(terrain.elevation(right, y) - terrain.elevation(left, y));
+  const double gap = std::hypot(points.forward[right] - points.forward[left],
+                                points.left[right] - points.left[left]);
+  const double rise = std::abs(points.elevation[right] - points.elevation[left]);
   return gap < options.bridged_gap_m && rise <= options.max_step_m;
 }
 
 // The verdict on the run [first, end) of held-back pixels of row y.
-std::uint8_t run_verdict(const TerrainPoints& terrain, const ZoneOptions& options,
+std::uint8_t run_verdict(const TerrainRows& terrain, const ZoneOptions& options,
                          const std::uint8_t* row, int y, int first, int end, std::uint64_t& tests) {
   const int width = terrain.width();
   // The run's ends must be seen ground on both sides.
@@ -30,12 +30,12 @@ std::uint8_t run_verdict(const TerrainPoints& terrain, const ZoneOptions& option
       row[first - 1] != kTraversable || row[end] != kTraversable)
     return kUnknown;
   ++tests;
-  return narrow_and_level(terrain, options, y, first - 1, end) ? kTraversable : kUnknown;
+  return narrow_and_level(terrain.row(y), options, first - 1, end) ? kTraversable : kUnknown;
 }
 
 } // namespace
 
-std::uint64_t bridge_small_gaps(const TerrainPoints& terrain, const ZoneOptions& options,
+std::uint64_t bridge_small_gaps(const TerrainRows& terrain, const ZoneOptions& options,
                                 imaging::Image<std::uint8_t>& zone) {
   std::uint64_t tests = 0;
   const int width = zone.width();

@@ -21,7 +21,7 @@ struct Columns {
         rows(static_cast<std::size_t>(width) * static_cast<std::size_t>(rows_per_column), memory),
         ranges(rows.size(), memory) {}
 
-  void gather(const TerrainPoints& terrain, const imaging::Image<std::uint8_t>& zone) {
+  void gather(const TerrainRows& terrain, const imaging::Image<std::uint8_t>& zone) {
     // Where the next entry of each column goes, in locals so that the stores to the columns
     // are not read as stores to them.
     const int width = terrain.width();
@@ -32,7 +32,7 @@ struct Columns {
     float* range_of = ranges.data();
     for (int y = terrain.height() - 1; y >= 0; --y) {
       const std::uint8_t* judged = zone.row(y);
-      const float* range = terrain.range.row(y);
+      const float* range = terrain.row(y).range;
       for (int x = 0; x < width; ++x) {
         if (judged[x] == kUnknown)
           continue;
@@ -156,7 +156,7 @@ void mark_contradictions(const LongestChain& chain, std::span<const float> range
 
 } // namespace
 
-std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions& options,
+std::uint64_t mark_out_of_order(const TerrainRows& terrain, const ZoneOptions& options,
                                 imaging::Image<std::uint8_t>& zone,
                                 std::pmr::memory_resource* memory) {
   if (options.order_tolerance <= 0.0)

@@ -8,7 +8,7 @@
 
 #include "zones/ground_grid.hpp"
 
-#include "marsokhod/nav/terrain/elevation.hpp"
+#include "marsokhod/nav/terrain/terrain_rows.hpp"
 #include "marsokhod/nav/zones/zones.hpp"
 
 #include <array>
@@ -28,7 +28,7 @@ inline constexpr std::uint8_t kUnreliable = 5;
 /// kUnreliable where (with unreliable_is_unknown) only `reliable` (0) rejects the point, and
 /// Zone::traversable elsewhere, into the single-channel `zone`. Returns whether any pixel is
 /// kUnreliable.
-bool mark_unknown(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> reliable,
+bool mark_unknown(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> reliable,
                   const ZoneOptions& options, imaging::Image<std::uint8_t>& zone);
 
 /// Marks Zone::unknown on pixels whose ground distance contradicts their column. Seen from
@@ -40,7 +40,7 @@ bool mark_unknown(const TerrainPoints& terrain, imaging::ImageView<const std::ui
 /// rock whose disparity lay outside the search, matched to the wrong place) is outvoted by the rest
 /// of its column, which a comparison with the next few rows alone would not see. Returns the
 /// comparisons made.
-std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions& options,
+std::uint64_t mark_out_of_order(const TerrainRows& terrain, const ZoneOptions& options,
                                 imaging::Image<std::uint8_t>& zone,
                                 std::pmr::memory_resource* memory);
 
@@ -48,7 +48,7 @@ std::uint64_t mark_out_of_order(const TerrainPoints& terrain, const ZoneOptions&
 /// single-channel `zone` whose two traversable ends are less than bridged_gap_m apart on the
 /// ground and within max_step_m of each other in height, and the other kUnreliable pixels to
 /// Zone::unknown. Returns the tests made (one per run with traversable ends).
-std::uint64_t bridge_small_gaps(const TerrainPoints& terrain, const ZoneOptions& options,
+std::uint64_t bridge_small_gaps(const TerrainRows& terrain, const ZoneOptions& options,
                                 imaging::Image<std::uint8_t>& zone);
 
 /// Cells of the grid within `distance_m` along each axis: at least one.
@@ -120,7 +120,7 @@ struct CellRules {
 /// step by its own test, else a slope where its cell is steep, else a margin where its cell is
 /// near an obstacle. Pixels that were not binned keep their zone. Returns the step tests made
 /// (two a pixel).
-std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainPoints& terrain,
+std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainRows& terrain,
                            const CellRules& rules, float step_limit,
                            imaging::Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);
 

@@ -58,17 +58,18 @@ bool hold_back_unreliable(const std::uint8_t* reliable, std::ptrdiff_t channels,
 
 } // namespace
 
-bool mark_unknown(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> reliable,
+bool mark_unknown(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> reliable,
                   const ZoneOptions& options, imaging::Image<std::uint8_t>& zone) {
   const bool use_reliable = options.unreliable_is_unknown && !reliable.empty();
   const float max_range = float_at_most(options.max_range_m);
   bool any_unreliable = false;
   for (int y = 0; y < terrain.height(); ++y) {
     std::uint8_t* out = zone.row(y);
-    mark_seen(terrain.elevation.row(y), terrain.range.row(y), max_range, terrain.width(), out);
+    const TerrainRows::Row row = terrain.row(y);
+    mark_seen(row.elevation, row.range, max_range, terrain.width(), out);
     if (use_reliable)
-      any_unreliable |= hold_back_unreliable(reliable.row(y), reliable.channels(),
-                                             terrain.range.row(y), terrain.width(), out);
+      any_unreliable |= hold_back_unreliable(reliable.row(y), reliable.channels(), row.range,
+                                             terrain.width(), out);
   }
   return any_unreliable;
 }

@@ -30,7 +30,7 @@ ScratchBuffer<std::uint8_t> cell_verdicts(const CellRules& rules,
 
 } // namespace
 
-std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainPoints& terrain,
+std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainRows& terrain,
                            const CellRules& rules, float step_limit,
                            imaging::Image<std::uint8_t>& zone, std::pmr::memory_resource* memory) {
   const ScratchBuffer<std::uint8_t> verdicts = cell_verdicts(rules, memory);
@@ -48,7 +48,7 @@ std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainPoints& terrain,
   std::uint64_t judged = 0;
   for (int y = 0; y < zone.height(); ++y) {
     const std::int32_t* cells = grid.cells_of_row(y);
-    const float* elevation = terrain.elevation.row(y);
+    const float* elevation = terrain.row(y).elevation;
     std::uint8_t* row = zone.row(y);
     const auto judge = [&](int x) {
       if (cells[x] < 0)

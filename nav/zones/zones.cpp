@@ -21,7 +21,7 @@ void require_positive(double value, const char* name) {
         fmt::format("zone option {} = {}: must be finite and positive", name, value));
 }
 
-void check_sizes(const TerrainPoints& terrain, int width, int height, const char* what) {
+void check_sizes(const TerrainRows& terrain, int width, int height, const char* what) {
   if (width != terrain.width() || height != terrain.height())
     throw std::invalid_argument(fmt::format("{}: {}x{} does not fit the {}x{} terrain", what, width,
                                             height, terrain.width(), terrain.height()));
@@ -39,7 +39,7 @@ detail::CellFlags obstacle_cells(const detail::CellRules& rules,
 
 // Steps, slopes and margins on the binned pixels, all traversable so far: the rules decide per
 // cell, and one pass over the pixels applies them.
-std::uint64_t mark_hazards(const TerrainPoints& terrain, const ZoneOptions& options,
+std::uint64_t mark_hazards(const TerrainRows& terrain, const ZoneOptions& options,
                            const detail::GroundGrid& grid, imaging::Image<std::uint8_t>& zone,
                            std::pmr::memory_resource* memory) {
   if (grid.empty())
@@ -96,7 +96,7 @@ void validate(const ZoneOptions& options) {
 }
 
 template <class Meter>
-ZoneMap find_zones(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> reliable,
+ZoneMap find_zones(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> reliable,
                    const ZoneOptions& options, Meter& meter, std::pmr::memory_resource* memory) {
   validate(options);
   if (!reliable.empty())
@@ -115,7 +115,7 @@ ZoneMap find_zones(const TerrainPoints& terrain, imaging::ImageView<const std::u
 }
 
 template <class Meter>
-void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMap& zones,
+void add_margin(const TerrainRows& terrain, const ZoneOptions& options, ZoneMap& zones,
                 Meter& meter, std::pmr::memory_resource* memory) {
   validate(options);
   check_sizes(terrain, zones.width(), zones.height(), "add_margin: the zone map");
@@ -127,9 +127,25 @@ void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMa
   zones.counts = detail::count_zones(zones.zone);
 }
 
+template <class Meter>
+ZoneMap find_zones(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> reliable,
+                   const ZoneOptions& options, Meter& meter, std::pmr::memory_resource* memory) {
+  return find_zones(ResidentTerrain(terrain), reliable, options, meter, memory);
+}
+
+template <class Meter>
+void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMap& zones,
+                Meter& meter, std::pmr::memory_resource* memory) {
+  add_margin(ResidentTerrain(terrain), options, zones, meter, memory);
+}
+
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
+  template ZoneMap find_zones<M>(const TerrainRows&, imaging::ImageView<const std::uint8_t>,       \
+                                 const ZoneOptions&, M&, std::pmr::memory_resource*);              \
   template ZoneMap find_zones<M>(const TerrainPoints&, imaging::ImageView<const std::uint8_t>,     \
                                  const ZoneOptions&, M&, std::pmr::memory_resource*);              \
+  template void add_margin<M>(const TerrainRows&, const ZoneOptions&, ZoneMap&, M&,                \
+                              std::pmr::memory_resource*);                                         \
   template void add_margin<M>(const TerrainPoints&, const ZoneOptions&, ZoneMap&, M&,              \
                               std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)

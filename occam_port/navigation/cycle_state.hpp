@@ -55,6 +55,7 @@ struct CycleState {
   // The host's side.
   nav::NavigationResult products;
   nav::CountingMeter work;
+  nav::CountingMeter recomputed_work;
   std::vector<StageFigures> stages;
   std::optional<MemoryFaultFigures> fault;
   std::optional<std::string> error;
@@ -72,6 +73,10 @@ public:
   /// The meter the nav kernels report to (through the virtual call: they are compiled once).
   nav::DynamicMeter& meter() { return meter_; }
   const EmulatedMeter& emulated_meter() const { return meter_; }
+  /// The meter for work done again (terrain rows worked out again): charged on the node like
+  /// the other, counted apart.
+  nav::DynamicMeter& recompute_meter() { return recompute_meter_; }
+  const EmulatedMeter& emulated_recompute_meter() const { return recompute_meter_; }
   std::pmr::memory_resource* memory() { return &node_->memory(); }
   /// Names the buffer or kernel the next allocations are for.
   void doing(std::string what) { what_ = std::move(what); }
@@ -87,6 +92,7 @@ private:
   emulator::Node* node_;
   std::string name_;
   EmulatedMeter meter_;
+  EmulatedMeter recompute_meter_;
   std::string what_;
   std::optional<emulator::Tick> started_;
 };

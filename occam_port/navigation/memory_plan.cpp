@@ -36,6 +36,13 @@ PlannedBuffer image(std::string_view what, const Geometry& g, int bytes_per_pixe
           g.pixels() * static_cast<std::size_t>(bytes_per_pixel)};
 }
 
+// The terrain no process keeps: one row of level points at a time, worked out again from the
+// disparity.
+PlannedBuffer terrain_row(const Geometry& g) {
+  return {buffer_name("terrain row (forward, left, elevation, range)", 1, g.width, 16),
+          static_cast<std::size_t>(g.width) * 16};
+}
+
 // What each process holds at its peak in the one-band programme: the images and maps it
 // receives, keeps and hands on.
 std::vector<PlannedBuffer> buffers_of(std::string_view process, const Geometry& g) {
@@ -58,12 +65,13 @@ std::vector<PlannedBuffer> buffers_of(std::string_view process, const Geometry& 
     return {image("left image", g, 1), image("disparity, filled and smoothed", g, 4),
             image("validity", g, 1), image("texture mask", g, 1), image("seeable disparity", g, 4)};
   if (process == "range")
-    return {image("seeable disparity", g, 4), image("validity", g, 1),
-            image("terrain points (forward, left, elevation, range)", g, 16)};
+    return {image("seeable disparity", g, 4), image("validity", g, 1), terrain_row(g)};
   if (process == "zones")
-    return {image("terrain points", g, 16), image("validity", g, 1), image("zone map", g, 1)};
+    return {image("seeable disparity (the terrain, kept)", g, 4), image("validity", g, 1),
+            terrain_row(g), image("zone map", g, 1)};
   if (process == "path")
-    return {image("terrain points", g, 16), image("zone map", g, 1), image("row sweep costs", g, 4),
+    return {image("seeable disparity (the terrain, kept)", g, 4), terrain_row(g),
+            image("zone map", g, 1), image("row sweep costs", g, 4),
             image("row sweep steps", g, 1)};
   if (process == "drive")
     return {{buffer_name("ground path", g.height, 1, 16), static_cast<std::size_t>(g.height) * 16}};
@@ -130,9 +138,11 @@ MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& 
 }
 
 std::string describe(const MemoryPlan& plan) {
-  std::string text = fmt::format("memory plan for {}x{} images: the original layer matched in "
-                                 "bands of {} rows, the other stages on whole images\n",
-                                 plan.image_width, plan.image_height, plan.band_rows);
+  std::string text = fmt::format(
+      "memory plan for {}x{} images: the original layer matched in "
+      "bands of {} rows, the terrain worked out again row by row where it is read, the other "
+      "stages on whole images\n",
+      plan.image_width, plan.image_height, plan.band_rows);
   for (const NodePlan& node : plan.nodes) {
     text += fmt::format("  {}: {} B = {} reserved + {} code + {} workspaces + {} free for "
                         "buffers; peak of buffers {} B: {}\n",

@@ -144,9 +144,11 @@ void spawn_processes(Network& net, const Placement& placement, CycleState& cycle
           cycle.error = fmt::format("process {} on {}: {}", name, node.name(), error.what());
         cycle.kernel->stop();
       }
-      for (std::size_t k = 0; k < nav::kWorkKinds; ++k)
-        cycle.work(static_cast<nav::Work>(k),
-                   context.emulated_meter().counts().count(static_cast<nav::Work>(k)));
+      for (std::size_t k = 0; k < nav::kWorkKinds; ++k) {
+        const auto kind = static_cast<nav::Work>(k);
+        cycle.work(kind, context.emulated_meter().counts().count(kind));
+        cycle.recomputed_work(kind, context.emulated_recompute_meter().counts().count(kind));
+      }
     };
     try {
       node.spawn(name, std::move(body),
@@ -242,6 +244,7 @@ CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetu
   out.stages = std::move(cycle.stages);
   out.memory_fault = cycle.fault;
   out.work = cycle.work;
+  out.recomputed_work = cycle.recomputed_work;
   out.telemetry = std::move(cycle.telemetry);
   out.context_switches = net.kernel.context_switches();
   collect_figures(net, platform, placement, accounting, out);

@@ -24,21 +24,29 @@ struct PlanHeader {
   double score = 0.0;
 };
 
-void send_terrain(BlockChannel& channel, const nav::TerrainPoints& terrain) {
-  for (const FloatImage* plane :
-       {&terrain.forward, &terrain.left, &terrain.elevation, &terrain.range})
-    send_image<float>(channel, plane->view());
-  send_value(channel, terrain.known_pixels);
+// The terrain as the nodes keep it: the seeable disparity and its count of known points. Each
+// process that reads the terrain works its rows out again from the disparity.
+void send_terrain(BlockChannel& channel, const FloatImage& seeable, std::uint64_t known_pixels) {
+  send_image<float>(channel, seeable.view());
+  send_value(channel, known_pixels);
 }
 
-nav::TerrainPoints receive_terrain(ProcessContext& c, BlockChannel& channel) {
-  nav::TerrainPoints terrain;
-  terrain.forward = receive_floats(c, channel, "terrain forward");
-  terrain.left = receive_floats(c, channel, "terrain left");
-  terrain.elevation = receive_floats(c, channel, "terrain elevation");
-  terrain.range = receive_floats(c, channel, "terrain range");
-  terrain.known_pixels = receive_value<std::uint64_t>(channel);
-  return terrain;
+struct KeptTerrain {
+  FloatImage seeable;
+  std::uint64_t known_pixels = 0;
+};
+
+KeptTerrain receive_terrain(ProcessContext& c, BlockChannel& channel) {
+  KeptTerrain kept{receive_floats(c, channel, "seeable disparity (the terrain, kept)"), 0};
+  kept.known_pixels = receive_value<std::uint64_t>(channel);
+  return kept;
+}
+
+nav::RecomputedTerrain terrain_rows(ProcessContext& c, const KeptTerrain& kept) {
+  const CycleState& s = c.cycle();
+  c.doing(image_what("terrain row (forward, left, elevation, range)", s.width, 1, 16));
+  return nav::RecomputedTerrain(kept.seeable, *s.rig, s.options.attitude, kept.known_pixels,
+                                c.recompute_meter(), c.memory());
 }
 
 void upload(ProcessContext& c, std::span<const std::byte> payload) {
@@ -76,27 +84,29 @@ void range(ProcessContext& c) {
   const FloatImage seeable = receive_floats(c, s.channels.disparity, "seeable disparity");
   c.start_stage();
   const U8Image valid = receive_bytes(c, s.channels.disparity, "validity", s.width, s.height);
-  c.doing(image_what("terrain points (forward, left, elevation, range)", s.width, s.height, 16));
-  const nav::TerrainPoints terrain =
-      nav::reconstruct_terrain(seeable, *s.rig, s.options.attitude, c.meter(), c.memory());
-  s.products.terrain = terrain;
+  c.doing(image_what("terrain row (forward, left, elevation, range)", s.width, 1, 16));
+  const std::uint64_t known =
+      nav::count_terrain_points(seeable, *s.rig, s.options.attitude, c.meter(), c.memory());
+  // The maps no node keeps, worked out on the host for the files (as read out of a node).
+  s.products.terrain = nav::reconstruct_terrain(seeable, *s.rig, s.options.attitude);
   send_text(s.channels.terrain, reason);
-  send_terrain(s.channels.terrain, terrain);
+  send_terrain(s.channels.terrain, seeable, known);
   send_image<std::uint8_t>(s.channels.terrain, valid.view());
 }
 
 void zones(ProcessContext& c) {
   CycleState& s = c.cycle();
   const std::string reason = receive_text(s.channels.terrain, c.memory());
-  const nav::TerrainPoints terrain = receive_terrain(c, s.channels.terrain);
+  const KeptTerrain kept = receive_terrain(c, s.channels.terrain);
   c.start_stage();
   const U8Image valid = receive_bytes(c, s.channels.terrain, "validity", s.width, s.height);
+  const nav::RecomputedTerrain terrain = terrain_rows(c, kept);
   c.doing("prohibited zones: ground grid and zone map");
   const nav::ZoneMap zones =
       nav::find_zones(terrain, valid, s.options.zones, c.meter(), c.memory());
   s.products.zones = zones;
   send_text(s.channels.zones, reason);
-  send_terrain(s.channels.zones, terrain);
+  send_terrain(s.channels.zones, kept.seeable, kept.known_pixels);
   send_image<std::uint8_t>(s.channels.zones, zones.zone.view());
   send_value(s.channels.zones, zones.counts);
 }
@@ -104,11 +114,12 @@ void zones(ProcessContext& c) {
 void path(ProcessContext& c) {
   CycleState& s = c.cycle();
   const std::string reason = receive_text(s.channels.zones, c.memory());
-  const nav::TerrainPoints terrain = receive_terrain(c, s.channels.zones);
+  const KeptTerrain kept = receive_terrain(c, s.channels.zones);
   c.start_stage();
-  nav::ZoneMap zones;
+  nav::ZoneMap zones{U8Image(c.memory()), {}};
   zones.zone = receive_bytes(c, s.channels.zones, "zone map", s.width, s.height);
   zones.counts = receive_value<decltype(zones.counts)>(s.channels.zones);
+  const nav::RecomputedTerrain terrain = terrain_rows(c, kept);
   c.doing("safest path: row sweep costs and steps");
   nav::PathPlan plan =
       nav::plan_cycle_path(terrain, zones, s.options.planner, c.meter(), c.memory());

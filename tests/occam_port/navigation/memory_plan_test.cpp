@@ -41,8 +41,9 @@ TEST(MemoryPlan, BuffersFollowTheImageSizeAndThePyramid) {
   // original layer's census features of both eyes (2 x 16384).
   EXPECT_EQ(process(node, "features").buffer_bytes(),
             2 * 16384U + 2 * (4096U + 1024U) + 2 * 16384U);
-  // The seeable disparity (4 B), the validity (1 B) and four REAL32 terrain maps.
-  EXPECT_EQ(process(node, "range").buffer_bytes(), 128U * 128U * (4 + 1 + 16));
+  // The seeable disparity (4 B), the validity (1 B) and one row of terrain points (4 REAL32):
+  // the terrain is kept as the disparity.
+  EXPECT_EQ(process(node, "range").buffer_bytes(), 128U * 128U * (4 + 1) + 128U * 16);
   EXPECT_EQ(process(node, "acquire").buffer_bytes(), 16384U);
   // Matching keeps its inputs, the coarser layer's result (64x64, 4 B + 1 B) and one band of
   // 8 matched rows (4 B + 1 B); refine the whole original layer on its way to range.
@@ -66,9 +67,11 @@ TEST(MemoryPlan, NodeFiguresAddCodeWorkspacesAndThePeakHandOver) {
   }
   EXPECT_EQ(node.code_bytes, code);
   EXPECT_EQ(node.free_for_buffers(), node.memory_bytes - 0x70U - code - workspace);
-  // zones (terrain 16 B + validity + zone map) hands over to path (terrain, zone map, sweep
-  // costs 4 B and steps 1 B): the largest pair of neighbours.
-  EXPECT_EQ(node.buffer_bytes(), 128U * 128U * ((16 + 1 + 1) + (16 + 1 + 4 + 1)));
+  // zones (the disparity 4 B, validity, zone map and a terrain row) hands over to path (the
+  // disparity, a terrain row, the zone map, sweep costs 4 B and steps 1 B): the largest pair
+  // of neighbours, above refine's hand-over to range (264 192 B).
+  EXPECT_EQ(node.buffer_bytes(),
+            128U * 128U * ((4 + 1 + 1) + (4 + 1 + 4 + 1)) + 2 * 128U * 16);
   EXPECT_TRUE(node.fits());
 }
 
@@ -81,7 +84,8 @@ TEST(MemoryPlan, OnboardModulesDoNotHoldTheWholeImageStages) {
   EXPECT_EQ(plan.nodes[1].node, "module1");
   // The original layer matched band by band: module0 holds the matching half.
   EXPECT_TRUE(plan.nodes[0].fits());
-  EXPECT_FALSE(plan.nodes[1].fits()); // four REAL32 terrain maps alone are 256 KB
+  // Zones handing over to path hold 260 KB of images and maps, beyond the 246 KB left.
+  EXPECT_FALSE(plan.nodes[1].fits());
   EXPECT_FALSE(plan.fits());
   // With 1 MB per module (a what-if) the same plan fits.
   EXPECT_TRUE(plan_memory(onboard.platform, onboard.placement, 128, 128, 3, 1024 * 1024).fits());

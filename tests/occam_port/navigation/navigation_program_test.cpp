@@ -83,6 +83,14 @@ TEST(NavigationProgram, GivesTheNativeCycleResultAndReportsTheSameWork) {
       const auto kind = static_cast<nav::Work>(k);
       EXPECT_EQ(run.work.count(kind), native_work.count(kind)) << nav::to_string(kind);
     }
+    // The terrain is kept as the disparity: the zones and the path work its rows out again,
+    // reported apart. Only the range and elevation of points are done again, and the zones'
+    // passes over the rows (at least five) alone do each point again five times.
+    const std::uint64_t points = native_work.count(nav::Work::range_pixel);
+    EXPECT_GE(run.recomputed_work.count(nav::Work::range_pixel), 5 * points);
+    EXPECT_EQ(run.recomputed_work.count(nav::Work::elevation_pixel),
+              run.recomputed_work.count(nav::Work::range_pixel));
+    EXPECT_EQ(run.recomputed_work.total(), 2 * run.recomputed_work.count(nav::Work::range_pixel));
     EXPECT_GT(run.emulated, 0);
   }
 }

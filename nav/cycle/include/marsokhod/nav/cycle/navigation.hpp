@@ -76,6 +76,10 @@ template <class Meter = NullMeter>
 PathPlan plan_cycle_path(const TerrainPoints& terrain, const ZoneMap& zones,
                          const PlannerOptions& options, Meter& meter = null_meter,
                          std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+template <class Meter = NullMeter>
+PathPlan plan_cycle_path(const TerrainRows& terrain, const ZoneMap& zones,
+                         const PlannerOptions& options, Meter& meter = null_meter,
+                         std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// A stereo matcher that gave up (a non-empty reason) leaves the cycle without a path, for
 /// that reason ("stereo: ..."), whatever the planner made of its empty map.

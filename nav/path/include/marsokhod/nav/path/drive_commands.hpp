@@ -3,6 +3,7 @@
 
 #include "marsokhod/nav/path/path_planner.hpp"
 #include "marsokhod/nav/terrain/elevation.hpp"
+#include "marsokhod/nav/terrain/terrain_rows.hpp"
 
 #include <memory_resource>
 #include <span>
@@ -58,6 +59,9 @@ DrivePlan plan_drive(std::span<const GroundPoint> ground_path, const DriveOption
 /// no known point.
 std::pmr::vector<GroundPoint>
 ground_path(const TerrainPoints& terrain, std::span<const PixelPoint> path,
+            std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+std::pmr::vector<GroundPoint>
+ground_path(const TerrainRows& terrain, std::span<const PixelPoint> path,
             std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// The same for a pixel path over the terrain (each pixel must be known).

@@ -3,6 +3,7 @@
 
 #include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/nav/terrain/elevation.hpp"
+#include "marsokhod/nav/terrain/terrain_rows.hpp"
 #include "marsokhod/nav/work/work.hpp"
 #include "marsokhod/nav/zones/zones.hpp"
 
@@ -90,6 +91,10 @@ template <class Meter = NullMeter>
 RowSweep sweep_rows(const TerrainPoints& terrain, const ZoneMap& zones, PixelPoint start,
                     int first_row, const EdgeWeights& weights, Meter& meter = null_meter,
                     std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+template <class Meter = NullMeter>
+RowSweep sweep_rows(const TerrainRows& terrain, const ZoneMap& zones, PixelPoint start,
+                    int first_row, const EdgeWeights& weights, Meter& meter = null_meter,
+                    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// The safest path over the traversable pixels, start first.
 struct PathPlan {
@@ -110,6 +115,11 @@ struct PathPlan {
 template <class Meter = NullMeter>
 PathPlan plan_path(const TerrainPoints& terrain, const ZoneMap& zones,
                    const PlannerOptions& options, Meter& meter = null_meter,
+                   std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+/// plan_path on terrain read row by row.
+template <class Meter = NullMeter>
+PathPlan plan_path(const TerrainRows& terrain, const ZoneMap& zones, const PlannerOptions& options,
+                   Meter& meter = null_meter,
                    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 } // namespace marsokhod::nav

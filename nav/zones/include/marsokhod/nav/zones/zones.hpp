@@ -3,6 +3,7 @@
 
 #include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/nav/terrain/elevation.hpp"
+#include "marsokhod/nav/terrain/terrain_rows.hpp"
 #include "marsokhod/nav/work/work.hpp"
 
 #include <array>
@@ -93,12 +94,21 @@ template <class Meter = NullMeter>
 ZoneMap find_zones(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> reliable,
                    const ZoneOptions& options, Meter& meter = null_meter,
                    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+/// find_zones on terrain read row by row (each pass over the rows reads every row once).
+template <class Meter = NullMeter>
+ZoneMap find_zones(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> reliable,
+                   const ZoneOptions& options, Meter& meter = null_meter,
+                   std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// The last stage of find_zones on its own: marks Zone::margin within rover_half_width_m of
 /// the steps and slopes already in `zones` (from any source, e.g. a ground-truth obstacle map) and
 /// recounts the zones. Same errors and instantiations as find_zones.
 template <class Meter = NullMeter>
 void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMap& zones,
+                Meter& meter = null_meter,
+                std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+template <class Meter = NullMeter>
+void add_margin(const TerrainRows& terrain, const ZoneOptions& options, ZoneMap& zones,
                 Meter& meter = null_meter,
                 std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 

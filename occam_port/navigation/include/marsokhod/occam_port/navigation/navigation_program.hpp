@@ -100,6 +100,10 @@ struct CycleEmulation {
   std::optional<nav::NavigationResult> result;
   /// Work the nav kernels reported inside the emulation.
   nav::CountingMeter work;
+  /// The work done again because a node could not keep its result: the terrain rows the zones
+  /// and the path work out again from the disparity. Not in `work`, which equals the native
+  /// cycle's.
+  nav::CountingMeter recomputed_work;
   /// What reached the host or ground link: the path and the drive commands, then the wheel
   /// commands the motion scheme gave, each upload as the device received it.
   std::vector<std::vector<std::byte>> telemetry;
