@@ -55,6 +55,7 @@ nlohmann::ordered_json plan_json(const occam_port::MemoryPlan& plan) {
   return {{"image_width", plan.image_width},
           {"image_height", plan.image_height},
           {"band_rows", plan.band_rows},
+          {"terrain_kept", plan.terrain_kept},
           {"fits", plan.fits()},
           {"nodes", nodes}};
 }

@@ -47,6 +47,9 @@ struct CycleState {
   int height = 0;
   const imaging::StereoRig* rig = nullptr;
   nav::NavigationOptions options;
+  /// Whether the processes after range keep the terrain's four maps (the memory plan's choice)
+  /// or only the disparity, working its rows out again where they read them.
+  bool terrain_kept = true;
   emulator::Kernel* kernel = nullptr;
   CycleChannels channels;
   /// Each node's link to the devices (frame store, host), if it has one.

@@ -43,9 +43,39 @@ PlannedBuffer terrain_row(const Geometry& g) {
           static_cast<std::size_t>(g.width) * 16};
 }
 
+// The stages reading the terrain hold it whole (four REAL32 maps) or as the disparity plus one
+// row worked out again.
+std::vector<PlannedBuffer> terrain_buffers(const Geometry& g, bool kept) {
+  if (kept)
+    return {image("terrain points (forward, left, elevation, range)", g, 16)};
+  return {image("seeable disparity (the terrain, kept)", g, 4), terrain_row(g)};
+}
+
+std::vector<PlannedBuffer> terrain_stage_buffers(std::string_view process, const Geometry& g,
+                                                 bool kept) {
+  std::vector<PlannedBuffer> buffers = terrain_buffers(g, kept);
+  if (process == "range") {
+    // Range also holds the disparity it makes the terrain of, kept or not.
+    if (kept)
+      buffers.insert(buffers.begin(), image("seeable disparity", g, 4));
+    buffers.push_back(image("validity", g, 1));
+    return buffers;
+  }
+  if (process == "zones") {
+    buffers.push_back(image("validity", g, 1));
+    buffers.push_back(image("zone map", g, 1));
+    return buffers;
+  }
+  buffers.push_back(image("zone map", g, 1));
+  buffers.push_back(image("row sweep costs", g, 4));
+  buffers.push_back(image("row sweep steps", g, 1));
+  return buffers;
+}
+
 // What each process holds at its peak in the one-band programme: the images and maps it
 // receives, keeps and hands on.
-std::vector<PlannedBuffer> buffers_of(std::string_view process, const Geometry& g) {
+std::vector<PlannedBuffer> buffers_of(std::string_view process, const Geometry& g,
+                                      bool terrain_kept) {
   if (process == "acquire")
     return {image("camera image", g, 1)};
   if (process == "features")
@@ -64,15 +94,8 @@ std::vector<PlannedBuffer> buffers_of(std::string_view process, const Geometry& 
   if (process == "refine")
     return {image("left image", g, 1), image("disparity, filled and smoothed", g, 4),
             image("validity", g, 1), image("texture mask", g, 1), image("seeable disparity", g, 4)};
-  if (process == "range")
-    return {image("seeable disparity", g, 4), image("validity", g, 1), terrain_row(g)};
-  if (process == "zones")
-    return {image("seeable disparity (the terrain, kept)", g, 4), image("validity", g, 1),
-            terrain_row(g), image("zone map", g, 1)};
-  if (process == "path")
-    return {image("seeable disparity (the terrain, kept)", g, 4), terrain_row(g),
-            image("zone map", g, 1), image("row sweep costs", g, 4),
-            image("row sweep steps", g, 1)};
+  if (process == "range" || process == "zones" || process == "path")
+    return terrain_stage_buffers(process, g, terrain_kept);
   if (process == "drive")
     return {{buffer_name("ground path", g.height, 1, 16), static_cast<std::size_t>(g.height) * 16}};
   return {};
@@ -112,11 +135,12 @@ std::string buffer_name(std::string_view what, int rows, int columns, int bytes_
   return fmt::format("{}, {} rows x {} px x {} B", what, rows, columns, bytes_per_element);
 }
 
-MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& placement,
-                       int width, int height, int pyramid_levels,
-                       std::optional<std::size_t> external_bytes) {
-  const Geometry geometry{width, height, pyramid_levels};
-  MemoryPlan plan{width, height, nav::kMatchedBandRows, {}};
+namespace {
+
+MemoryPlan plan_with(const emulator::PlatformSpec& platform, const Placement& placement,
+                     const Geometry& geometry, std::optional<std::size_t> external_bytes,
+                     bool terrain_kept) {
+  MemoryPlan plan{geometry.width, geometry.height, nav::kMatchedBandRows, terrain_kept, {}};
   for (const emulator::NodeSpec& node : platform.nodes) {
     NodePlan node_plan;
     node_plan.node = node.name;
@@ -129,7 +153,8 @@ MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& 
       node_plan.code_bytes += process.code_bytes;
       node_plan.workspace_bytes += process.workspace_bytes;
       node_plan.processes.push_back({std::string(process.name), process.code_bytes,
-                                     process.workspace_bytes, buffers_of(process.name, geometry)});
+                                     process.workspace_bytes,
+                                     buffers_of(process.name, geometry, terrain_kept)});
     }
     if (!node_plan.processes.empty())
       plan.nodes.push_back(std::move(node_plan));
@@ -137,12 +162,28 @@ MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& 
   return plan;
 }
 
+} // namespace
+
+MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& placement,
+                       int width, int height, int pyramid_levels,
+                       std::optional<std::size_t> external_bytes) {
+  const Geometry geometry{width, height, pyramid_levels};
+  // The terrain's four maps are kept where the nodes hold them; otherwise only the disparity,
+  // and its rows are worked out again where they are read.
+  MemoryPlan kept = plan_with(platform, placement, geometry, external_bytes, true);
+  if (kept.fits())
+    return kept;
+  return plan_with(platform, placement, geometry, external_bytes, false);
+}
+
 std::string describe(const MemoryPlan& plan) {
-  std::string text = fmt::format(
-      "memory plan for {}x{} images: the original layer matched in "
-      "bands of {} rows, the terrain worked out again row by row where it is read, the other "
-      "stages on whole images\n",
-      plan.image_width, plan.image_height, plan.band_rows);
+  std::string text =
+      fmt::format("memory plan for {}x{} images: the original layer matched in bands of {} rows, "
+                  "the terrain {}, the other stages on whole images\n",
+                  plan.image_width, plan.image_height, plan.band_rows,
+                  plan.terrain_kept ? "kept as four maps"
+                                    : "kept as the disparity and worked out again row by row "
+                                      "where it is read");
   for (const NodePlan& node : plan.nodes) {
     text += fmt::format("  {}: {} B = {} reserved + {} code + {} workspaces + {} free for "
                         "buffers; peak of buffers {} B: {}\n",

@@ -1,5 +1,6 @@
 // The navigation program's processes from image acquisition to telemetry, the stereo half aside.
 
+#include "navigation/node_terrain.hpp"
 #include "navigation/process_bodies.hpp"
 
 #include "marsokhod/emulator/links/link.hpp"
@@ -23,31 +24,6 @@ struct PlanHeader {
   double cost = 0.0;
   double score = 0.0;
 };
-
-// The terrain as the nodes keep it: the seeable disparity and its count of known points. Each
-// process that reads the terrain works its rows out again from the disparity.
-void send_terrain(BlockChannel& channel, const FloatImage& seeable, std::uint64_t known_pixels) {
-  send_image<float>(channel, seeable.view());
-  send_value(channel, known_pixels);
-}
-
-struct KeptTerrain {
-  FloatImage seeable;
-  std::uint64_t known_pixels = 0;
-};
-
-KeptTerrain receive_terrain(ProcessContext& c, BlockChannel& channel) {
-  KeptTerrain kept{receive_floats(c, channel, "seeable disparity (the terrain, kept)"), 0};
-  kept.known_pixels = receive_value<std::uint64_t>(channel);
-  return kept;
-}
-
-nav::RecomputedTerrain terrain_rows(ProcessContext& c, const KeptTerrain& kept) {
-  const CycleState& s = c.cycle();
-  c.doing(image_what("terrain row (forward, left, elevation, range)", s.width, 1, 16));
-  return nav::RecomputedTerrain(kept.seeable, *s.rig, s.options.attitude, kept.known_pixels,
-                                c.recompute_meter(), c.memory());
-}
 
 void upload(ProcessContext& c, std::span<const std::byte> payload) {
   emulator::LinkPort& port = c.device_port();
@@ -84,29 +60,28 @@ void range(ProcessContext& c) {
   const FloatImage seeable = receive_floats(c, s.channels.disparity, "seeable disparity");
   c.start_stage();
   const U8Image valid = receive_bytes(c, s.channels.disparity, "validity", s.width, s.height);
-  c.doing(image_what("terrain row (forward, left, elevation, range)", s.width, 1, 16));
-  const std::uint64_t known =
-      nav::count_terrain_points(seeable, *s.rig, s.options.attitude, c.meter(), c.memory());
-  // The maps no node keeps, worked out on the host for the files (as read out of a node).
-  s.products.terrain = nav::reconstruct_terrain(seeable, *s.rig, s.options.attitude);
   send_text(s.channels.terrain, reason);
-  send_terrain(s.channels.terrain, seeable, known);
+  make_and_send_terrain(c, seeable, s.channels.terrain);
   send_image<std::uint8_t>(s.channels.terrain, valid.view());
+}
+
+// The zones of the terrain; the validity they take goes before the hand-over to path.
+nav::ZoneMap zone_map(ProcessContext& c, const nav::TerrainRows& terrain) {
+  CycleState& s = c.cycle();
+  const U8Image valid = receive_bytes(c, s.channels.terrain, "validity", s.width, s.height);
+  c.doing("prohibited zones: ground grid and zone map");
+  return nav::find_zones(terrain, valid, s.options.zones, c.meter(), c.memory());
 }
 
 void zones(ProcessContext& c) {
   CycleState& s = c.cycle();
   const std::string reason = receive_text(s.channels.terrain, c.memory());
-  const KeptTerrain kept = receive_terrain(c, s.channels.terrain);
+  const NodeTerrain terrain(c, s.channels.terrain);
   c.start_stage();
-  const U8Image valid = receive_bytes(c, s.channels.terrain, "validity", s.width, s.height);
-  const nav::RecomputedTerrain terrain = terrain_rows(c, kept);
-  c.doing("prohibited zones: ground grid and zone map");
-  const nav::ZoneMap zones =
-      nav::find_zones(terrain, valid, s.options.zones, c.meter(), c.memory());
+  const nav::ZoneMap zones = zone_map(c, terrain.rows());
   s.products.zones = zones;
   send_text(s.channels.zones, reason);
-  send_terrain(s.channels.zones, kept.seeable, kept.known_pixels);
+  terrain.send(s.channels.zones);
   send_image<std::uint8_t>(s.channels.zones, zones.zone.view());
   send_value(s.channels.zones, zones.counts);
 }
@@ -114,20 +89,19 @@ void zones(ProcessContext& c) {
 void path(ProcessContext& c) {
   CycleState& s = c.cycle();
   const std::string reason = receive_text(s.channels.zones, c.memory());
-  const KeptTerrain kept = receive_terrain(c, s.channels.zones);
+  const NodeTerrain terrain(c, s.channels.zones);
   c.start_stage();
   nav::ZoneMap zones{U8Image(c.memory()), {}};
   zones.zone = receive_bytes(c, s.channels.zones, "zone map", s.width, s.height);
   zones.counts = receive_value<decltype(zones.counts)>(s.channels.zones);
-  const nav::RecomputedTerrain terrain = terrain_rows(c, kept);
   c.doing("safest path: row sweep costs and steps");
   nav::PathPlan plan =
-      nav::plan_cycle_path(terrain, zones, s.options.planner, c.meter(), c.memory());
+      nav::plan_cycle_path(terrain.rows(), zones, s.options.planner, c.meter(), c.memory());
   nav::explain_stereo_failure(reason, plan);
   std::pmr::vector<nav::GroundPoint> ground(c.memory());
   if (plan.found) {
     c.doing(fmt::format("ground path, {} points x 16 B", plan.pixels.size()));
-    ground = nav::ground_path(terrain, plan.pixels, c.memory());
+    ground = nav::ground_path(terrain.rows(), plan.pixels, c.memory());
   }
   s.products.plan = plan;
   send_value(s.channels.path,

@@ -168,7 +168,17 @@ void matching(ProcessContext& c) {
   send_list<nav::StereoLayerStats>(s.channels.matched, walked.layers);
 }
 
-void refine(ProcessContext& c) {
+// The original layer assembled and finished, and its seeable disparity. Only what range needs
+// is kept: the rest goes before the hand-over, when range's buffers arrive beside these.
+namespace {
+
+struct Refined {
+  std::string reason;
+  FloatImage seeable;
+  U8Image valid;
+};
+
+Refined refined_stereo(ProcessContext& c) {
   CycleState& s = c.cycle();
   std::string uniform = receive_text(s.channels.matched, c.memory());
   const U8Image left = receive_bytes(c, s.channels.matched, "left image", s.width, s.height);
@@ -181,12 +191,20 @@ void refine(ProcessContext& c) {
       uniform.empty() ? assemble_stereo(c, options)
                       : nav::unmatched_stereo(s.width, s.height, std::move(uniform), c.memory());
   c.doing(image_what("seeable disparity and texture mask", s.width, s.height, 5));
-  const FloatImage seeable =
+  FloatImage seeable =
       nav::seeable_disparity(left, stereo.disparity, *s.rig, s.options, c.memory());
   s.products.stereo = stereo;
-  send_text(s.channels.disparity, stereo.reason);
-  send_image<float>(s.channels.disparity, seeable.view());
-  send_image<std::uint8_t>(s.channels.disparity, stereo.valid.view());
+  return {stereo.reason, std::move(seeable), std::move(stereo.valid)};
+}
+
+} // namespace
+
+void refine(ProcessContext& c) {
+  CycleState& s = c.cycle();
+  const Refined refined = refined_stereo(c);
+  send_text(s.channels.disparity, refined.reason);
+  send_image<float>(s.channels.disparity, refined.seeable.view());
+  send_image<std::uint8_t>(s.channels.disparity, refined.valid.view());
 }
 
 } // namespace marsokhod::occam_port::detail

@@ -41,9 +41,10 @@ TEST(MemoryPlan, BuffersFollowTheImageSizeAndThePyramid) {
   // original layer's census features of both eyes (2 x 16384).
   EXPECT_EQ(process(node, "features").buffer_bytes(),
             2 * 16384U + 2 * (4096U + 1024U) + 2 * 16384U);
-  // The seeable disparity (4 B), the validity (1 B) and one row of terrain points (4 REAL32):
-  // the terrain is kept as the disparity.
-  EXPECT_EQ(process(node, "range").buffer_bytes(), 128U * 128U * (4 + 1) + 128U * 16);
+  // The seeable disparity (4 B), the validity (1 B) and the four REAL32 terrain maps, which
+  // the card's 2 MB keep.
+  EXPECT_TRUE(plan.terrain_kept);
+  EXPECT_EQ(process(node, "range").buffer_bytes(), 128U * 128U * (4 + 1 + 16));
   EXPECT_EQ(process(node, "acquire").buffer_bytes(), 16384U);
   // Matching keeps its inputs, the coarser layer's result (64x64, 4 B + 1 B) and one band of
   // 8 matched rows (4 B + 1 B); refine the whole original layer on its way to range.
@@ -67,11 +68,9 @@ TEST(MemoryPlan, NodeFiguresAddCodeWorkspacesAndThePeakHandOver) {
   }
   EXPECT_EQ(node.code_bytes, code);
   EXPECT_EQ(node.free_for_buffers(), node.memory_bytes - 0x70U - code - workspace);
-  // zones (the disparity 4 B, validity, zone map and a terrain row) hands over to path (the
-  // disparity, a terrain row, the zone map, sweep costs 4 B and steps 1 B): the largest pair
-  // of neighbours, above refine's hand-over to range (264 192 B).
-  EXPECT_EQ(node.buffer_bytes(),
-            128U * 128U * ((4 + 1 + 1) + (4 + 1 + 4 + 1)) + 2 * 128U * 16);
+  // zones (terrain 16 B + validity + zone map) hands over to path (terrain, zone map, sweep
+  // costs 4 B and steps 1 B): the largest pair of neighbours.
+  EXPECT_EQ(node.buffer_bytes(), 128U * 128U * ((16 + 1 + 1) + (16 + 1 + 4 + 1)));
   EXPECT_TRUE(node.fits());
 }
 
@@ -84,11 +83,30 @@ TEST(MemoryPlan, OnboardModulesDoNotHoldTheWholeImageStages) {
   EXPECT_EQ(plan.nodes[1].node, "module1");
   // The original layer matched band by band: module0 holds the matching half.
   EXPECT_TRUE(plan.nodes[0].fits());
-  // Zones handing over to path hold 260 KB of images and maps, beyond the 246 KB left.
+  // Even with the terrain kept as the disparity, zones handing over to path hold 260 KB of
+  // images and maps (the disparity 4 B, validity, zone map and a terrain row, then the
+  // disparity, a terrain row, the zone map, sweep costs 4 B and steps 1 B); 246 KB are left.
+  EXPECT_FALSE(plan.terrain_kept);
+  EXPECT_EQ(plan.nodes[1].buffer_bytes(),
+            128U * 128U * ((4 + 1 + 1) + (4 + 1 + 4 + 1)) + 2 * 128U * 16);
   EXPECT_FALSE(plan.nodes[1].fits());
   EXPECT_FALSE(plan.fits());
-  // With 1 MB per module (a what-if) the same plan fits.
-  EXPECT_TRUE(plan_memory(onboard.platform, onboard.placement, 128, 128, 3, 1024 * 1024).fits());
+  // With 1 MB per module (a what-if) the plan fits, the terrain's maps kept.
+  const MemoryPlan roomy =
+      plan_memory(onboard.platform, onboard.placement, 128, 128, 3, 1024 * 1024);
+  EXPECT_TRUE(roomy.fits());
+  EXPECT_TRUE(roomy.terrain_kept);
+}
+
+TEST(MemoryPlan, TheTerrainIsKeptWhereTheMapsFitAndWorkedOutAgainWhereNot) {
+  const Shipped card = shipped("pc-card");
+  // At 256 x 256 the four maps are 1 MB: zones handing over to path would hold 2.3 MB, more
+  // than the card's 2 MB, so only the disparity is kept; with 8 MB the maps are.
+  const MemoryPlan small = plan_memory(card.platform, card.placement, 256, 256, 4, std::nullopt);
+  EXPECT_FALSE(small.terrain_kept);
+  EXPECT_TRUE(small.fits());
+  EXPECT_EQ(process(small.nodes[0], "zones").buffer_bytes(), 256U * 256U * (4 + 1 + 1) + 256U * 16);
+  EXPECT_TRUE(plan_memory(card.platform, card.placement, 256, 256, 4, 8U << 20).terrain_kept);
 }
 
 } // namespace

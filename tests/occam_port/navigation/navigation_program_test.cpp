@@ -19,23 +19,24 @@ const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_
 /// A textured pair whose right image is the left one shifted by a disparity that grows down the
 /// rows, as level ground does; the stereo matcher has something to find everywhere.
 struct SyntheticPair {
-  imaging::Image<std::uint8_t> left{128, 128};
-  imaging::Image<std::uint8_t> right{128, 128};
+  imaging::Image<std::uint8_t> left;
+  imaging::Image<std::uint8_t> right;
   imaging::StereoRig rig{imaging::RigParameters{}};
 
-  explicit SyntheticPair(unsigned seed) {
+  explicit SyntheticPair(unsigned seed, int side = 128) : left(side, side), right(side, side) {
     imaging::RigParameters parameters;
-    parameters.width_px = parameters.height_px = 128;
+    parameters.width_px = parameters.height_px = side;
     rig = imaging::StereoRig(parameters);
     std::mt19937 random(seed);
     std::uniform_int_distribution<int> grey(0, 255);
-    imaging::Image<std::uint8_t> texture(192, 128); // room for x + 20 + d, d at most 17
-    for (int y = 0; y < 128; ++y)
-      for (int x = 0; x < 192; ++x)
+    // Room for x + 20 + d, d at most 2 + (side - 1) / 8.
+    imaging::Image<std::uint8_t> texture(side + 64, side);
+    for (int y = 0; y < side; ++y)
+      for (int x = 0; x < side + 64; ++x)
         texture(x, y) = static_cast<std::uint8_t>(grey(random));
-    for (int y = 0; y < 128; ++y) {
+    for (int y = 0; y < side; ++y) {
       const int d = 2 + y / 8;
-      for (int x = 0; x < 128; ++x) {
+      for (int x = 0; x < side; ++x) {
         left(x, y) = texture(x + 20, y);
         right(x, y) = texture(x + 20 + d, y);
       }
@@ -57,42 +58,76 @@ bool same_floats(const imaging::Image<float>& a, const imaging::Image<float>& b)
          std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 
-TEST(NavigationProgram, GivesTheNativeCycleResultAndReportsTheSameWork) {
+/// One pair run natively (counting its work) and on the PC card, every process on the card.
+struct Compared {
+  nav::CountingMeter native_work;
+  nav::NavigationResult native;
+  CycleEmulation run;
+};
+
+Compared on_the_card(const SyntheticPair& pair) {
   const emulator::PlatformSpec card = emulator::load_platform(kPlatforms / "pc-card.toml");
   const Placement placement = everything_on("card", card.name);
+  const nav::NavigationOptions options;
+  Compared compared;
+  compared.native = nav::navigate(pair.left, pair.right, pair.rig, options, compared.native_work);
+  const CycleInput input{pair.left, pair.right, &pair.rig, options};
+  compared.run =
+      emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr});
+  return compared;
+}
+
+void expect_the_native_work(const Compared& c) {
+  for (std::size_t k = 0; k < nav::kWorkKinds; ++k) {
+    const auto kind = static_cast<nav::Work>(k);
+    EXPECT_EQ(c.run.work.count(kind), c.native_work.count(kind)) << nav::to_string(kind);
+  }
+}
+
+TEST(NavigationProgram, GivesTheNativeCycleResultAndReportsTheSameWork) {
   for (unsigned seed : {1U, 2U}) {
-    const SyntheticPair pair(seed);
-    nav::NavigationOptions options;
-    nav::CountingMeter native_work;
-    const nav::NavigationResult native =
-        nav::navigate(pair.left, pair.right, pair.rig, options, native_work);
-    const CycleInput input{pair.left, pair.right, &pair.rig, options};
-    const CycleEmulation run =
-        emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr});
+    const Compared c = on_the_card(SyntheticPair(seed));
+    const CycleEmulation& run = c.run;
     ASSERT_FALSE(run.memory_fault);
     ASSERT_TRUE(run.result);
-    EXPECT_TRUE(same_floats(run.result->stereo.disparity, native.stereo.disparity));
-    EXPECT_EQ(run.result->stereo.valid_pixels, native.stereo.valid_pixels);
-    EXPECT_EQ(std::memcmp(run.result->zones.zone.data(), native.zones.zone.data(),
-                          native.zones.zone.size()),
+    EXPECT_TRUE(same_floats(run.result->stereo.disparity, c.native.stereo.disparity));
+    EXPECT_EQ(run.result->stereo.valid_pixels, c.native.stereo.valid_pixels);
+    EXPECT_EQ(std::memcmp(run.result->zones.zone.data(), c.native.zones.zone.data(),
+                          c.native.zones.zone.size()),
               0);
-    EXPECT_EQ(run.result->found(), native.found());
-    EXPECT_EQ(run.result->reason(), native.reason());
-    EXPECT_EQ(run.result->plan.pixels, native.plan.pixels);
-    for (std::size_t k = 0; k < nav::kWorkKinds; ++k) {
-      const auto kind = static_cast<nav::Work>(k);
-      EXPECT_EQ(run.work.count(kind), native_work.count(kind)) << nav::to_string(kind);
-    }
-    // The terrain is kept as the disparity: the zones and the path work its rows out again,
-    // reported apart. Only the range and elevation of points are done again, and the zones'
-    // passes over the rows (at least five) alone do each point again five times.
-    const std::uint64_t points = native_work.count(nav::Work::range_pixel);
-    EXPECT_GE(run.recomputed_work.count(nav::Work::range_pixel), 5 * points);
-    EXPECT_EQ(run.recomputed_work.count(nav::Work::elevation_pixel),
-              run.recomputed_work.count(nav::Work::range_pixel));
-    EXPECT_EQ(run.recomputed_work.total(), 2 * run.recomputed_work.count(nav::Work::range_pixel));
+    EXPECT_EQ(run.result->found(), c.native.found());
+    EXPECT_EQ(run.result->reason(), c.native.reason());
+    EXPECT_EQ(run.result->plan.pixels, c.native.plan.pixels);
+    expect_the_native_work(c);
+    // The card's 2 MB keep the terrain's maps at 128 x 128: nothing is worked out again.
+    EXPECT_TRUE(run.plan.terrain_kept);
+    EXPECT_EQ(run.recomputed_work.total(), 0U);
     EXPECT_GT(run.emulated, 0);
   }
+}
+
+TEST(NavigationProgram, WhereTheTerrainMapsDoNotFitTheirRowsAreWorkedOutAgainAndReportedApart) {
+  // At 256 x 256 the card's 2 MB cannot keep the four terrain maps beside the zones and the
+  // path: the plan keeps the disparity, and the zones and the path work the rows out again.
+  const Compared c = on_the_card(SyntheticPair(3, 256));
+  const CycleEmulation& run = c.run;
+  ASSERT_FALSE(run.memory_fault);
+  ASSERT_TRUE(run.result);
+  EXPECT_FALSE(run.plan.terrain_kept);
+  EXPECT_TRUE(same_floats(run.result->terrain.range, c.native.terrain.range));
+  EXPECT_EQ(std::memcmp(run.result->zones.zone.data(), c.native.zones.zone.data(),
+                        c.native.zones.zone.size()),
+            0);
+  EXPECT_EQ(run.result->plan.pixels, c.native.plan.pixels);
+  expect_the_native_work(c);
+  // Only the range and elevation of points are done again, and the zones' passes over the
+  // rows (at least five) alone do every point again five times.
+  const std::uint64_t points = c.native_work.count(nav::Work::range_pixel);
+  EXPECT_GT(points, 0U);
+  EXPECT_GE(run.recomputed_work.count(nav::Work::range_pixel), 5 * points);
+  EXPECT_EQ(run.recomputed_work.count(nav::Work::elevation_pixel),
+            run.recomputed_work.count(nav::Work::range_pixel));
+  EXPECT_EQ(run.recomputed_work.total(), 2 * run.recomputed_work.count(nav::Work::range_pixel));
 }
 
 TEST(NavigationProgram, AMemoryFaultEndsTheRunWithTheNodeProcessAndBuffer) {

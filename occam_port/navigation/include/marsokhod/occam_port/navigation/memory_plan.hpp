@@ -51,6 +51,9 @@ struct MemoryPlan {
   int image_width = 0;
   int image_height = 0;
   int band_rows = 0; ///< rows per band of the original layer's matching and its hand-over
+  /// Whether the stages after range keep the terrain's four maps; when they would not fit, only
+  /// the disparity is kept and its rows are worked out again where they are read.
+  bool terrain_kept = true;
   std::vector<NodePlan> nodes;
   bool fits() const;
 };
@@ -58,7 +61,8 @@ struct MemoryPlan {
 /// The plan for `width` x `height` images matched over `pyramid_levels` layers, of the placement
 /// on the platform (with every node's external memory replaced by `external_bytes` when given).
 /// The buffers planned are those the stages hand each other and keep; the kernels' own scratch
-/// (cost rows, the ground grid) is not planned but measured by the run.
+/// (cost rows, the ground grid) is not planned but measured by the run. The terrain is kept as
+/// four maps when the plan fits with them, else as the disparity (MemoryPlan::terrain_kept).
 MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& placement,
                        int width, int height, int pyramid_levels,
                        std::optional<std::size_t> external_bytes);
