@@ -56,6 +56,7 @@ nlohmann::ordered_json plan_json(const occam_port::MemoryPlan& plan) {
           {"image_height", plan.image_height},
           {"band_rows", plan.band_rows},
           {"terrain_kept", plan.terrain_kept},
+          {"zone_grid_bytes", plan.zone_grid_bytes},
           {"fits", plan.fits()},
           {"nodes", nodes}};
 }

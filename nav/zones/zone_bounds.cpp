@@ -80,8 +80,14 @@ __m128i widen_four(const std::uint8_t* bytes) {
 
 } // namespace
 
+void mark_binned_row(const std::uint8_t* zone, const float* elevation, const float* range,
+                     float max_range, int width, std::int32_t* binned) {
+  for (int x = 0; x < width; ++x)
+    binned[x] = binned_pixel(zone[x], elevation[x], range[x], max_range) ? kBinned : kNotBinned;
+}
+
 GroundBounds mark_binned(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> zone,
-                         float max_range, std::int32_t* binned) {
+                         float max_range, std::int32_t* binned, std::ptrdiff_t row_stride) {
   const int width = terrain.width();
   GroundBounds bounds;
 #ifdef __SSE2__
@@ -99,7 +105,7 @@ GroundBounds mark_binned(const TerrainRows& terrain, imaging::ImageView<const st
     const float* range = row.range;
     const float* forward = row.forward;
     const float* left = row.left;
-    std::int32_t* out = binned + static_cast<std::ptrdiff_t>(y) * width;
+    std::int32_t* out = binned + y * row_stride;
     int x = 0;
 #ifdef __SSE2__
     for (; x + 4 <= width; x += 4) {

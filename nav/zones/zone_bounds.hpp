@@ -40,7 +40,12 @@ struct GroundBounds {
 /// `binned`; returns the bounds of the binned points. The order the points are taken in does not
 /// matter: only a tie of +0 and -0 could tell, and the grid's origin and size come out the same
 /// for both.
+/// Row y's entries go to binned + y * row_stride (a stride of 0 reuses one row).
 GroundBounds mark_binned(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> zone,
-                         float max_range, std::int32_t* binned);
+                         float max_range, std::int32_t* binned, std::ptrdiff_t row_stride);
+
+/// mark_binned for one row, without the bounds.
+void mark_binned_row(const std::uint8_t* zone, const float* elevation, const float* range,
+                     float max_range, int width, std::int32_t* binned);
 
 } // namespace marsokhod::nav::detail

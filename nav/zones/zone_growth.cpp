@@ -57,13 +57,19 @@ CellFlags spread_along_rows(const GroundGrid& grid, const CellFlags& flags, int 
 } // namespace
 
 CellFlags near_cells(const GroundGrid& grid, const CellFlags& obstacle, const ZoneOptions& options,
-                     std::pmr::memory_resource* memory, std::uint64_t& tests) {
+                     std::pmr::memory_resource* memory, RuleWork& tests) {
   CellFlags near(obstacle.size(), memory);
   std::fill_n(near.data(), near.size(), std::uint8_t{0});
   if (grid.empty() || options.rover_half_width_m <= 0.0)
     return near;
-  const auto obstacles = static_cast<std::uint64_t>(std::count_if(
-      obstacle.data(), obstacle.data() + obstacle.size(), [](std::uint8_t f) { return f != 0; }));
+  std::uint64_t obstacles = 0;
+  std::uint64_t own_obstacles = 0;
+  for (int iy = 0; iy < grid.ny(); ++iy)
+    for (int ix = 0; ix < grid.nx(); ++ix)
+      if (obstacle[static_cast<std::size_t>(grid.index(ix, iy))] != 0) {
+        ++obstacles;
+        own_obstacles += grid.owns(ix) ? 1 : 0;
+      }
   if (obstacles == 0)
     return near;
   // Every cell whose centre lies within the half-width of an obstacle cell's centre: the disc
@@ -72,8 +78,9 @@ CellFlags near_cells(const GroundGrid& grid, const CellFlags& obstacle, const Zo
   const double reach = options.rover_half_width_m / grid.cell();
   const int r = static_cast<int>(std::floor(reach));
   const std::pmr::vector<int> half_run = disc_half_runs(r, reach, memory);
-  tests +=
-      obstacles * static_cast<std::uint64_t>(2 * r + 1) * static_cast<std::uint64_t>(2 * r + 1);
+  const auto disc = static_cast<std::uint64_t>(2 * r + 1) * static_cast<std::uint64_t>(2 * r + 1);
+  tests.own += own_obstacles * disc;
+  tests.halo += (obstacles - own_obstacles) * disc;
   // Growing by the whole row's width already reaches every cell of it.
   const int widest = std::min(r, grid.nx() - 1);
   const CellFlags spread = spread_along_rows(grid, obstacle, widest, memory);
@@ -113,10 +120,10 @@ std::uint64_t grow_margin(const GroundGrid& grid, const ZoneOptions& options,
       if (pixel_cells[x] >= 0 && is_obstacle(row[x * channels]))
         obstacle[static_cast<std::size_t>(pixel_cells[x])] = 1;
   }
-  std::uint64_t tests = 0;
+  RuleWork tests;
   const CellFlags near = near_cells(grid, obstacle, options, memory, tests);
   mark_flagged_cells(grid, near, Zone::margin, zone);
-  return tests;
+  return tests.own;
 }
 
 } // namespace marsokhod::nav::detail

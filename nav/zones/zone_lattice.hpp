@@ -25,6 +25,18 @@ struct LatticeAxis {
   }
 };
 
+/// The ground grid's lattice: `along` the forward axis (the grid's columns), `across` the
+/// lateral one (its rows), `origin`, a binned point that masked lanes stand in for, and the
+/// range beyond which points are not binned.
+struct GroundLattice {
+  LatticeAxis along{0.0, 0.1, 0};
+  LatticeAxis across{0.0, 0.1, 0};
+  float origin[2] = {0.0F, 0.0F};
+  float max_range = 0.0F;
+
+  bool empty() const { return along.n == 0 || across.n == 0; }
+};
+
 #ifdef __SSE2__
 /// cell_of for four points: each widened to a double, offset, divided and truncated as one
 /// would be (a NaN truncates to INT_MIN in both and is clamped to cell 0).

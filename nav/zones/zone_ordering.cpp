@@ -13,48 +13,53 @@ namespace {
 
 constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
 
-// The judged pixels of every column, bottom row first, gathered row by row so that the image
-// is read in memory order: column x holds count[x] entries from x * height on.
+// The judged pixels of columns first .. first + columns - 1, bottom row first, gathered row by
+// row so that the image is read in memory order: column x holds count[x - first] entries from
+// (x - first) * height on.
 struct Columns {
-  Columns(int width, int rows_per_column, std::pmr::memory_resource* memory)
-      : height(rows_per_column), count(static_cast<std::size_t>(width), 0, memory),
-        rows(static_cast<std::size_t>(width) * static_cast<std::size_t>(rows_per_column), memory),
+  Columns(int first_column, int columns, int rows_per_column, std::pmr::memory_resource* memory)
+      : first(first_column), height(rows_per_column),
+        count(static_cast<std::size_t>(columns), 0, memory),
+        rows(static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows_per_column), memory),
         ranges(rows.size(), memory) {}
 
   void gather(const TerrainRows& terrain, const imaging::Image<std::uint8_t>& zone) {
     // Where the next entry of each column goes, in locals so that the stores to the columns
     // are not read as stores to them.
-    const int width = terrain.width();
+    const int end = first + static_cast<int>(count.size());
     std::pmr::vector<std::size_t> next(count.size(), count.get_allocator());
-    for (int x = 0; x < width; ++x)
-      next[static_cast<std::size_t>(x)] = start(x);
+    for (int x = first; x < end; ++x)
+      next[static_cast<std::size_t>(x - first)] = start(x);
     int* row_of = rows.data();
     float* range_of = ranges.data();
     for (int y = terrain.height() - 1; y >= 0; --y) {
       const std::uint8_t* judged = zone.row(y);
       const float* range = terrain.row(y).range;
-      for (int x = 0; x < width; ++x) {
+      for (int x = first; x < end; ++x) {
         if (judged[x] == kUnknown)
           continue;
-        const std::size_t at = next[static_cast<std::size_t>(x)]++;
+        const std::size_t at = next[static_cast<std::size_t>(x - first)]++;
         row_of[at] = y;
         range_of[at] = range[x];
       }
     }
-    for (int x = 0; x < width; ++x)
-      count[static_cast<std::size_t>(x)] =
-          static_cast<int>(next[static_cast<std::size_t>(x)] - start(x));
+    for (int x = first; x < end; ++x)
+      count[static_cast<std::size_t>(x - first)] =
+          static_cast<int>(next[static_cast<std::size_t>(x - first)] - start(x));
   }
   std::size_t start(int x) const {
-    return static_cast<std::size_t>(x) * static_cast<std::size_t>(height);
+    return static_cast<std::size_t>(x - first) * static_cast<std::size_t>(height);
   }
   std::span<const float> ranges_of(int x) const {
-    return {ranges.data() + start(x), static_cast<std::size_t>(count[static_cast<std::size_t>(x)])};
+    return {ranges.data() + start(x),
+            static_cast<std::size_t>(count[static_cast<std::size_t>(x - first)])};
   }
   std::span<const int> rows_of(int x) const {
-    return {rows.data() + start(x), static_cast<std::size_t>(count[static_cast<std::size_t>(x)])};
+    return {rows.data() + start(x),
+            static_cast<std::size_t>(count[static_cast<std::size_t>(x - first)])};
   }
 
+  int first;
   int height;
   std::pmr::vector<int> count;
   ScratchBuffer<int> rows; // only the first count[x] of each column are written
@@ -158,17 +163,21 @@ void mark_contradictions(const LongestChain& chain, std::span<const float> range
 
 std::uint64_t mark_out_of_order(const TerrainRows& terrain, const ZoneOptions& options,
                                 imaging::Image<std::uint8_t>& zone,
-                                std::pmr::memory_resource* memory) {
+                                std::pmr::memory_resource* memory, int band_columns) {
   if (options.order_tolerance <= 0.0)
     return 0;
-  Columns columns(zone.width(), zone.height(), memory);
-  columns.gather(terrain, zone);
+  const int width = zone.width();
+  const int band = band_columns > 0 ? std::min(band_columns, width) : width;
   LongestChain chain(memory);
   std::uint64_t tests = 0;
-  for (int x = 0; x < zone.width(); ++x) {
-    tests += chain.find(columns.ranges_of(x));
-    mark_contradictions(chain, columns.ranges_of(x), columns.rows_of(x), options.order_tolerance, x,
-                        zone);
+  for (int first = 0; first < width; first += band) {
+    Columns columns(first, std::min(band, width - first), zone.height(), memory);
+    columns.gather(terrain, zone);
+    for (int x = first; x < first + static_cast<int>(columns.count.size()); ++x) {
+      tests += chain.find(columns.ranges_of(x));
+      mark_contradictions(chain, columns.ranges_of(x), columns.rows_of(x), options.order_tolerance,
+                          x, zone);
+    }
   }
   return tests;
 }

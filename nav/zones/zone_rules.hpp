@@ -40,9 +40,11 @@ bool mark_unknown(const TerrainRows& terrain, imaging::ImageView<const std::uint
 /// rock whose disparity lay outside the search, matched to the wrong place) is outvoted by the rest
 /// of its column, which a comparison with the next few rows alone would not see. Returns the
 /// comparisons made.
+/// The columns are gathered `band_columns` at a time (0: all at once), each band in one pass
+/// over the rows; the result is the same.
 std::uint64_t mark_out_of_order(const TerrainRows& terrain, const ZoneOptions& options,
                                 imaging::Image<std::uint8_t>& zone,
-                                std::pmr::memory_resource* memory);
+                                std::pmr::memory_resource* memory, int band_columns = 0);
 
 /// Turns back to Zone::traversable the runs of kUnreliable pixels along a row of the
 /// single-channel `zone` whose two traversable ends are less than bridged_gap_m apart on the
@@ -52,12 +54,29 @@ std::uint64_t bridge_small_gaps(const TerrainRows& terrain, const ZoneOptions& o
                                 imaging::Image<std::uint8_t>& zone);
 
 /// Cells of the grid within `distance_m` along each axis: at least one.
-int cells_within(const GroundGrid& grid, double distance_m);
+int cells_within(double cell_m, double distance_m);
+inline int cells_within(const GroundGrid& grid, double distance_m) {
+  return cells_within(grid.cell(), distance_m);
+}
 
 /// Cells r apart along an axis such that any two points of cells at most r apart lie within
 /// `distance_m` of each other along it: the largest r with (r + 1) cells <= distance_m, at least
 /// one.
-int cells_apart_within(const GroundGrid& grid, double distance_m);
+int cells_apart_within(double cell_m, double distance_m);
+inline int cells_apart_within(const GroundGrid& grid, double distance_m) {
+  return cells_apart_within(grid.cell(), distance_m);
+}
+
+/// Columns around a strip of the grid whose cells the rules of the strip's own cells read: the
+/// margin's reach plus the larger of the slope's and the step window's.
+int halo_columns(double cell_m, const ZoneOptions& options);
+
+/// Work a rule did for the grid's own columns, and for its halo (done again for the strips it
+/// also belongs to).
+struct RuleWork {
+  std::uint64_t own = 0;
+  std::uint64_t halo = 0;
+};
 
 /// Highest and lowest binned elevation over the window of cells_apart_within(step_baseline_m)
 /// cells around each cell, along both ground axes (-inf and +inf where the window is empty).
@@ -74,7 +93,7 @@ using CellFlags = ScratchBuffer<std::uint8_t>;
 /// it, and read the foot of every rock as a step a baseline away. `comparisons` counts the
 /// maxima and minima taken.
 StepWindow step_window(const GroundGrid& grid, const ZoneOptions& options,
-                       std::pmr::memory_resource* memory, std::uint64_t& comparisons);
+                       std::pmr::memory_resource* memory, RuleWork& comparisons);
 
 /// Whether a point of height `own` in a cell whose window is (`highest`, `lowest`) is a step:
 /// some point of the window is higher, or lower, than it by more than `limit`. Float
@@ -91,13 +110,13 @@ CellFlags step_cells(const GroundGrid& grid, const StepWindow& window, float lim
 /// Non-zero for the non-empty cells whose fitted plane is steeper than max_slope_deg. `tests`
 /// counts the cell means read.
 CellFlags steep_cells(const GroundGrid& grid, const ZoneOptions& options,
-                      std::pmr::memory_resource* memory, std::uint64_t& tests);
+                      std::pmr::memory_resource* memory, RuleWork& tests);
 
 /// Non-zero for the cells whose centre lies within rover_half_width_m of the centre of a
 /// cell flagged in `obstacle`; all zero when the half-width is 0. `tests` counts the cells of
 /// the disc around each obstacle cell.
 CellFlags near_cells(const GroundGrid& grid, const CellFlags& obstacle, const ZoneOptions& options,
-                     std::pmr::memory_resource* memory, std::uint64_t& tests);
+                     std::pmr::memory_resource* memory, RuleWork& tests);
 
 /// Sets `verdict` on the traversable pixels whose cell is flagged (non-zero) in `flagged`.
 void mark_flagged_cells(const GroundGrid& grid, const CellFlags& flagged, Zone verdict,
@@ -116,10 +135,10 @@ struct CellRules {
   CellFlags near;
 };
 
-/// The verdict of every binned pixel of the single-channel `zone` (all of them traversable): a
-/// step by its own test, else a slope where its cell is steep, else a margin where its cell is
-/// near an obstacle. Pixels that were not binned keep their zone. Returns the step tests made
-/// (two a pixel).
+/// The verdict of every binned pixel of the single-channel `zone` (all of them traversable)
+/// whose cell is one of the grid's own: a step by its own test, else a slope where its cell is
+/// steep, else a margin where its cell is near an obstacle. Other pixels keep their zone.
+/// Returns the step tests made (two a pixel).
 std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainRows& terrain,
                            const CellRules& rules, float step_limit,
                            imaging::Image<std::uint8_t>& zone, std::pmr::memory_resource* memory);

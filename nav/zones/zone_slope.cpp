@@ -88,7 +88,7 @@ private:
 } // namespace
 
 CellFlags steep_cells(const GroundGrid& grid, const ZoneOptions& options,
-                      std::pmr::memory_resource* memory, std::uint64_t& tests) {
+                      std::pmr::memory_resource* memory, RuleWork& tests) {
   CellFlags steep(static_cast<std::size_t>(grid.nx()) * grid.ny(), memory);
   if (grid.empty())
     return steep;
@@ -103,7 +103,8 @@ CellFlags steep_cells(const GroundGrid& grid, const ZoneOptions& options,
     for (int ix = 0; ix < nx; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * static_cast<std::size_t>(nx) +
                             static_cast<std::size_t>(ix);
-      out[i] = count[i] > 0 && fit.squared_gradient(ix, iy, tests) > squared_limit ? 1 : 0;
+      std::uint64_t& counted = grid.owns(ix) ? tests.own : tests.halo;
+      out[i] = count[i] > 0 && fit.squared_gradient(ix, iy, counted) > squared_limit ? 1 : 0;
     }
   return steep;
 }

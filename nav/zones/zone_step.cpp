@@ -71,20 +71,34 @@ StepWindow window_extremes(const GroundGrid& grid, int r, std::pmr::memory_resou
 
 } // namespace
 
-int cells_within(const GroundGrid& grid, double distance_m) {
-  return std::max(1, static_cast<int>(std::lround(distance_m / grid.cell())));
+int cells_within(double cell_m, double distance_m) {
+  return std::max(1, static_cast<int>(std::lround(distance_m / cell_m)));
 }
 
-int cells_apart_within(const GroundGrid& grid, double distance_m) {
+int cells_apart_within(double cell_m, double distance_m) {
   // The relative nudge keeps 0.30 / 0.10 at 3 despite rounding.
-  const double cells = std::floor(distance_m / grid.cell() * (1.0 + 1e-9));
+  const double cells = std::floor(distance_m / cell_m * (1.0 + 1e-9));
   return std::max(1, static_cast<int>(cells) - 1);
 }
 
+int halo_columns(double cell_m, const ZoneOptions& options) {
+  const int margin = static_cast<int>(std::floor(options.rover_half_width_m / cell_m));
+  return margin + std::max(cells_within(cell_m, 0.5 * options.slope_baseline_m),
+                           cells_apart_within(cell_m, options.step_baseline_m));
+}
+
 StepWindow step_window(const GroundGrid& grid, const ZoneOptions& options,
-                       std::pmr::memory_resource* memory, std::uint64_t& comparisons) {
-  return window_extremes(grid, cells_apart_within(grid, options.step_baseline_m), memory,
-                         comparisons);
+                       std::pmr::memory_resource* memory, RuleWork& comparisons) {
+  std::uint64_t all = 0;
+  StepWindow window =
+      window_extremes(grid, cells_apart_within(grid, options.step_baseline_m), memory, all);
+  // The same comparisons for every column: the own columns' share is exact.
+  const auto own = static_cast<std::uint64_t>(grid.own_end() - grid.own_begin());
+  const std::uint64_t own_share =
+      grid.nx() > 0 ? all / static_cast<std::uint64_t>(grid.nx()) * own : 0;
+  comparisons.own += own_share;
+  comparisons.halo += all - own_share;
+  return window;
 }
 
 CellFlags step_cells(const GroundGrid& grid, const StepWindow& window, float limit,

@@ -45,13 +45,17 @@ std::uint64_t judge_pixels(const GroundGrid& grid, const TerrainRows& terrain,
   const std::uint8_t* steep = rules.steep.data();
   const std::uint8_t* near = rules.near.data();
   const int width = zone.width();
+  const int nx = grid.nx();
+  const bool whole = grid.own_begin() == 0 && grid.own_end() == nx;
+  ScratchBuffer<std::int32_t> scratch(static_cast<std::size_t>(width), memory);
   std::uint64_t judged = 0;
   for (int y = 0; y < zone.height(); ++y) {
-    const std::int32_t* cells = grid.cells_of_row(y);
-    const float* elevation = terrain.row(y).elevation;
+    const TerrainRows::Row points = terrain.row(y);
     std::uint8_t* row = zone.row(y);
+    const std::int32_t* cells = grid.row_cells(y, points, row, scratch.data());
+    const float* elevation = points.elevation;
     const auto judge = [&](int x) {
-      if (cells[x] < 0)
+      if (cells[x] < 0 || (!whole && !grid.owns(cells[x] % nx)))
         return;
       ++judged;
       const auto i = static_cast<std::size_t>(cells[x]);

@@ -37,21 +37,68 @@ detail::CellFlags obstacle_cells(const detail::CellRules& rules,
   return obstacle;
 }
 
-// Steps, slopes and margins on the binned pixels, all traversable so far: the rules decide per
-// cell, and one pass over the pixels applies them.
-std::uint64_t mark_hazards(const TerrainRows& terrain, const ZoneOptions& options,
-                           const detail::GroundGrid& grid, imaging::Image<std::uint8_t>& zone,
-                           std::pmr::memory_resource* memory) {
+// Steps, slopes and margins on the binned pixels of the grid's own columns, all traversable so
+// far: the rules decide per cell, and one pass over the pixels applies them.
+detail::RuleWork judge_grid(const TerrainRows& terrain, const ZoneOptions& options,
+                            const detail::GroundGrid& grid, imaging::Image<std::uint8_t>& zone,
+                            std::pmr::memory_resource* memory) {
+  detail::RuleWork work;
   if (grid.empty())
-    return 0;
-  std::uint64_t work = 0;
+    return work;
   const auto step_limit = static_cast<float>(options.max_step_m);
   detail::CellRules rules{
       detail::step_window(grid, options, memory, work), detail::CellFlags(memory),
       detail::steep_cells(grid, options, memory, work), detail::CellFlags(memory)};
   rules.step = detail::step_cells(grid, rules.window, step_limit, memory);
   rules.near = detail::near_cells(grid, obstacle_cells(rules, memory), options, memory, work);
-  return work + detail::judge_pixels(grid, terrain, rules, step_limit, zone, memory);
+  work.own += detail::judge_pixels(grid, terrain, rules, step_limit, zone, memory);
+  return work;
+}
+
+// Columns of the ordering test gathered at once within the strips' bytes (a row index and a
+// distance, 8 bytes, per pixel): all of them for the whole grid.
+int order_band(const ZoneStrips& strips, int height) {
+  if (strips.grid_bytes == 0)
+    return 0;
+  const std::size_t column = static_cast<std::size_t>(std::max(height, 1)) * 8;
+  return static_cast<int>(std::max<std::size_t>(1, strips.grid_bytes / column));
+}
+
+// Own columns a strip: as given, or as many as the bytes hold beside the two halos.
+int strip_width(const ZoneStrips& strips, const detail::GroundLattice& lattice, int reach) {
+  if (strips.cells > 0)
+    return strips.cells;
+  const std::size_t column_bytes =
+      static_cast<std::size_t>(std::max(lattice.across.n, 1)) * kZoneGridBytesPerCell;
+  const auto held = static_cast<long long>(strips.grid_bytes / column_bytes);
+  return static_cast<int>(std::max(1LL, held - 2LL * reach));
+}
+
+// The whole grid at once, or strip by strip along the forward axis, each strip binned again
+// with the halo of columns its rules read (that halo's work goes to `halo`).
+std::uint64_t mark_hazards(const TerrainRows& terrain, const ZoneOptions& options,
+                           const ZoneStrips& strips, imaging::Image<std::uint8_t>& zone,
+                           std::pmr::memory_resource* memory, std::uint64_t& halo) {
+  std::uint64_t work = 0;
+  if (strips.cells <= 0 && strips.grid_bytes == 0) {
+    const detail::GroundGrid grid(terrain, zone, options.cell_m, options.max_range_m, memory, work);
+    return work + judge_grid(terrain, options, grid, zone, memory).own;
+  }
+  const detail::GroundLattice lattice =
+      detail::ground_lattice(terrain, zone, options.cell_m, options.max_range_m, memory);
+  const int columns = lattice.along.n;
+  const int reach = detail::halo_columns(options.cell_m, options);
+  const int width = strip_width(strips, lattice, reach);
+  for (int begin = 0; begin < columns; begin += width) {
+    const int end = std::min(columns, begin + width);
+    const detail::GridColumns strip{std::max(0, begin - reach), std::min(columns, end + reach),
+                                    begin, end};
+    const detail::GroundGrid grid(terrain, zone, lattice, strip, memory, work, halo);
+    const detail::RuleWork rules = judge_grid(terrain, options, grid, zone, memory);
+    work += rules.own;
+    halo += rules.halo;
+  }
+  return work;
 }
 
 } // namespace
@@ -97,7 +144,8 @@ void validate(const ZoneOptions& options) {
 
 template <class Meter>
 ZoneMap find_zones(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> reliable,
-                   const ZoneOptions& options, Meter& meter, std::pmr::memory_resource* memory) {
+                   const ZoneOptions& options, Meter& meter, std::pmr::memory_resource* memory,
+                   const ZoneStrips& strips) {
   validate(options);
   if (!reliable.empty())
     check_sizes(terrain, reliable.width(), reliable.height(), "find_zones: the reliability mask");
@@ -105,11 +153,13 @@ ZoneMap find_zones(const TerrainRows& terrain, imaging::ImageView<const std::uin
   std::uint64_t work = 0;
   if (detail::mark_unknown(terrain, reliable, options, map.zone))
     work += detail::bridge_small_gaps(terrain, options, map.zone);
-  work += detail::mark_out_of_order(terrain, options, map.zone, memory);
-  const detail::GroundGrid grid(terrain, map.zone, options.cell_m, options.max_range_m, memory,
-                                work);
-  work += mark_hazards(terrain, options, grid, map.zone, memory);
+  work += detail::mark_out_of_order(terrain, options, map.zone, memory,
+                                    order_band(strips, terrain.height()));
+  std::uint64_t halo = 0;
+  work += mark_hazards(terrain, options, strips, map.zone, memory, halo);
   detail::report(meter, Work::hazard_test, work);
+  if (strips.recompute != nullptr && halo > 0)
+    (*strips.recompute)(Work::hazard_test, halo);
   map.counts = detail::count_zones(map.zone);
   return map;
 }
@@ -130,7 +180,7 @@ void add_margin(const TerrainRows& terrain, const ZoneOptions& options, ZoneMap&
 template <class Meter>
 ZoneMap find_zones(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> reliable,
                    const ZoneOptions& options, Meter& meter, std::pmr::memory_resource* memory) {
-  return find_zones(ResidentTerrain(terrain), reliable, options, meter, memory);
+  return find_zones(ResidentTerrain(terrain), reliable, options, meter, memory, ZoneStrips{});
 }
 
 template <class Meter>
@@ -141,7 +191,8 @@ void add_margin(const TerrainPoints& terrain, const ZoneOptions& options, ZoneMa
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
   template ZoneMap find_zones<M>(const TerrainRows&, imaging::ImageView<const std::uint8_t>,       \
-                                 const ZoneOptions&, M&, std::pmr::memory_resource*);              \
+                                 const ZoneOptions&, M&, std::pmr::memory_resource*,               \
+                                 const ZoneStrips&);                                               \
   template ZoneMap find_zones<M>(const TerrainPoints&, imaging::ImageView<const std::uint8_t>,     \
                                  const ZoneOptions&, M&, std::pmr::memory_resource*);              \
   template void add_margin<M>(const TerrainRows&, const ZoneOptions&, ZoneMap&, M&,                \

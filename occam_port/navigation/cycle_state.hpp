@@ -50,6 +50,8 @@ struct CycleState {
   /// Whether the processes after range keep the terrain's four maps (the memory plan's choice)
   /// or only the disparity, working its rows out again where they read them.
   bool terrain_kept = true;
+  /// The zones' ground grid budget, strip by strip (0: whole; the memory plan's).
+  std::size_t zone_grid_bytes = 0;
   emulator::Kernel* kernel = nullptr;
   CycleChannels channels;
   /// Each node's link to the devices (frame store, host), if it has one.

@@ -140,7 +140,7 @@ namespace {
 MemoryPlan plan_with(const emulator::PlatformSpec& platform, const Placement& placement,
                      const Geometry& geometry, std::optional<std::size_t> external_bytes,
                      bool terrain_kept) {
-  MemoryPlan plan{geometry.width, geometry.height, nav::kMatchedBandRows, terrain_kept, {}};
+  MemoryPlan plan{geometry.width, geometry.height, nav::kMatchedBandRows, terrain_kept, 0, {}};
   for (const emulator::NodeSpec& node : platform.nodes) {
     NodePlan node_plan;
     node_plan.node = node.name;
@@ -162,6 +162,19 @@ MemoryPlan plan_with(const emulator::PlatformSpec& platform, const Placement& pl
   return plan;
 }
 
+// What the zones' node has beside the zones' own buffers, less a quarter.
+std::size_t zone_grid_budget(const MemoryPlan& plan) {
+  for (const NodePlan& node : plan.nodes)
+    for (const ProcessPlan& process : node.processes) {
+      if (process.process != "zones")
+        continue;
+      const std::size_t free = node.free_for_buffers();
+      const std::size_t own = process.buffer_bytes();
+      return free > own ? (free - own) / 2 : 1;
+    }
+  return 0;
+}
+
 } // namespace
 
 MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& placement,
@@ -173,7 +186,9 @@ MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& 
   MemoryPlan kept = plan_with(platform, placement, geometry, external_bytes, true);
   if (kept.fits())
     return kept;
-  return plan_with(platform, placement, geometry, external_bytes, false);
+  MemoryPlan plan = plan_with(platform, placement, geometry, external_bytes, false);
+  plan.zone_grid_bytes = zone_grid_budget(plan);
+  return plan;
 }
 
 std::string describe(const MemoryPlan& plan) {
@@ -184,6 +199,10 @@ std::string describe(const MemoryPlan& plan) {
                   plan.terrain_kept ? "kept as four maps"
                                     : "kept as the disparity and worked out again row by row "
                                       "where it is read");
+  if (plan.zone_grid_bytes > 0)
+    text += fmt::format("  the zones' ground grid in strips along the ground of at most {} B "
+                        "each, its halo binned again\n",
+                        plan.zone_grid_bytes);
   for (const NodePlan& node : plan.nodes) {
     text += fmt::format("  {}: {} B = {} reserved + {} code + {} workspaces + {} free for "
                         "buffers; peak of buffers {} B: {}\n",

@@ -7,6 +7,7 @@
 #include "marsokhod/nav/work/work.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory_resource>
 #include <string_view>
@@ -94,11 +95,30 @@ template <class Meter = NullMeter>
 ZoneMap find_zones(const TerrainPoints& terrain, imaging::ImageView<const std::uint8_t> reliable,
                    const ZoneOptions& options, Meter& meter = null_meter,
                    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
-/// find_zones on terrain read row by row (each pass over the rows reads every row once).
+/// Bytes a cell of the ground grid takes at the rules' peak: its statistics (16), the step
+/// window (8), the rules' flags (4) and the margin's row spreads (5).
+inline constexpr std::size_t kZoneGridBytesPerCell = 33;
+
+/// How find_zones holds the ground grid: whole (cells 0 and grid_bytes 0), or in strips of
+/// columns along the forward axis, one after another, each binned again from the terrain with
+/// the halo of columns its rules read around it (8 at the default options). The strips are
+/// `cells` columns wide, or as wide as `grid_bytes` hold at kZoneGridBytesPerCell once the
+/// grid's width across is known (at least one column). The zones are the same either way; the
+/// halos' work is reported to `recompute` (if given), apart from the whole grid's work, which
+/// goes to the meter as always.
+struct ZoneStrips {
+  int cells = 0;
+  std::size_t grid_bytes = 0;
+  DynamicMeter* recompute = nullptr;
+};
+
+/// find_zones on terrain read row by row (each pass over the rows reads every row once; with
+/// strips, two passes per strip), the ground grid whole or in strips.
 template <class Meter = NullMeter>
 ZoneMap find_zones(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> reliable,
                    const ZoneOptions& options, Meter& meter = null_meter,
-                   std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+                   std::pmr::memory_resource* memory = std::pmr::get_default_resource(),
+                   const ZoneStrips& strips = {});
 
 /// The last stage of find_zones on its own: marks Zone::margin within rover_half_width_m of
 /// the steps and slopes already in `zones` (from any source, e.g. a ground-truth obstacle map) and

@@ -54,6 +54,11 @@ struct MemoryPlan {
   /// Whether the stages after range keep the terrain's four maps; when they would not fit, only
   /// the disparity is kept and its rows are worked out again where they are read.
   bool terrain_kept = true;
+  /// The bytes the zones' ground grid may take, strip by strip along the forward axis (each
+  /// strip binned again with its halo); 0 for the whole grid at once. Set with the terrain kept
+  /// as the disparity: the zones' node's free memory beside the zones' own buffers, less a
+  /// quarter for the allocator's fragments and the kernels' smaller scratch.
+  std::size_t zone_grid_bytes = 0;
   std::vector<NodePlan> nodes;
   bool fits() const;
 };
