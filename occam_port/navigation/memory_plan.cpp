@@ -43,61 +43,77 @@ PlannedBuffer terrain_row(const Geometry& g) {
           static_cast<std::size_t>(g.width) * 16};
 }
 
-// The stages reading the terrain hold it whole (four REAL32 maps) or as the disparity plus one
-// row worked out again.
-std::vector<PlannedBuffer> terrain_buffers(const Geometry& g, bool kept) {
-  if (kept)
-    return {image("terrain points (forward, left, elevation, range)", g, 16)};
-  return {image("seeable disparity (the terrain, kept)", g, 4), terrain_row(g)};
+// A buffer that arrived from the previous process, one still held when handing over to the
+// next, or both.
+PlannedBuffer in(PlannedBuffer b) {
+  b.received = true;
+  return b;
+}
+PlannedBuffer out(PlannedBuffer b) {
+  b.handed = true;
+  return b;
+}
+PlannedBuffer through(PlannedBuffer b) {
+  return in(out(std::move(b)));
 }
 
+// The stages reading the terrain hold it whole (four REAL32 maps) or as the disparity plus one
+// row worked out again; range makes it, zones passes it on, path reads it.
 std::vector<PlannedBuffer> terrain_stage_buffers(std::string_view process, const Geometry& g,
                                                  bool kept) {
-  std::vector<PlannedBuffer> buffers = terrain_buffers(g, kept);
+  const PlannedBuffer maps = image("terrain points (forward, left, elevation, range)", g, 16);
+  const PlannedBuffer disparity = image("seeable disparity (the terrain, kept)", g, 4);
   if (process == "range") {
-    // Range also holds the disparity it makes the terrain of, kept or not.
-    if (kept)
-      buffers.insert(buffers.begin(), image("seeable disparity", g, 4));
-    buffers.push_back(image("validity", g, 1));
+    // Range holds what it received until it has handed the terrain on.
+    std::vector<PlannedBuffer> buffers{through(image("seeable disparity", g, 4)),
+                                       through(image("validity", g, 1))};
+    buffers.push_back(kept ? out(maps) : terrain_row(g));
     return buffers;
   }
+  std::vector<PlannedBuffer> buffers;
+  if (kept)
+    buffers.push_back(process == "zones" ? through(maps) : in(maps));
+  else
+    buffers.insert(buffers.end(),
+                   {process == "zones" ? through(disparity) : in(disparity), terrain_row(g)});
   if (process == "zones") {
-    buffers.push_back(image("validity", g, 1));
-    buffers.push_back(image("zone map", g, 1));
+    buffers.push_back(in(image("validity", g, 1))); // let go before the hand-over
+    buffers.push_back(out(image("zone map", g, 1)));
     return buffers;
   }
-  buffers.push_back(image("zone map", g, 1));
+  buffers.push_back(in(image("zone map", g, 1)));
   buffers.push_back(image("row sweep costs", g, 4));
   buffers.push_back(image("row sweep steps", g, 1));
   return buffers;
 }
 
-// What each process holds at its peak in the one-band programme: the images and maps it
-// receives, keeps and hands on.
+// What each process holds at its peak: the images and maps it receives, keeps and hands on.
 std::vector<PlannedBuffer> buffers_of(std::string_view process, const Geometry& g,
                                       bool terrain_kept) {
   if (process == "acquire")
-    return {image("camera image", g, 1)};
+    return {out(image("camera image", g, 1))};
+  // Features and matching hold everything until their last hand-over.
   if (process == "features")
-    return {image("left image", g, 1),
-            image("right image", g, 1),
-            {fmt::format("pyramid layers 1..{}, both eyes", g.levels - 1), 2 * g.pyramid_pixels()},
-            image("census features, left", g, 1),
-            image("census features, right", g, 1)};
+    return {
+        through(image("left image", g, 1)), through(image("right image", g, 1)),
+        out({fmt::format("pyramid layers 1..{}, both eyes", g.levels - 1), 2 * g.pyramid_pixels()}),
+        out(image("census features, left", g, 1)), out(image("census features, right", g, 1))};
   if (process == "matching")
-    return {image("left layer", g, 1),
-            image("census features, left", g, 1),
-            image("census features, right", g, 1),
-            {"coarser layer's disparity and validity", g.pixels() / 4 * 5},
-            {buffer_name("a band of disparity and validity", nav::kMatchedBandRows, g.width, 5),
-             static_cast<std::size_t>(nav::kMatchedBandRows * g.width) * 5}};
+    return {through(image("left layer", g, 1)), through(image("census features, left", g, 1)),
+            through(image("census features, right", g, 1)),
+            out({"coarser layer's disparity and validity", g.pixels() / 4 * 5}),
+            out({buffer_name("a band of disparity and validity", nav::kMatchedBandRows, g.width, 5),
+                 static_cast<std::size_t>(nav::kMatchedBandRows * g.width) * 5})};
+  // Refine lets go of the image, the filled disparity and the mask before its hand-over.
   if (process == "refine")
-    return {image("left image", g, 1), image("disparity, filled and smoothed", g, 4),
-            image("validity", g, 1), image("texture mask", g, 1), image("seeable disparity", g, 4)};
+    return {in(image("left image", g, 1)), in(image("disparity, filled and smoothed", g, 4)),
+            through(image("validity", g, 1)), image("texture mask", g, 1),
+            out(image("seeable disparity", g, 4))};
   if (process == "range" || process == "zones" || process == "path")
     return terrain_stage_buffers(process, g, terrain_kept);
   if (process == "drive")
-    return {{buffer_name("ground path", g.height, 1, 16), static_cast<std::size_t>(g.height) * 16}};
+    return {
+        in({buffer_name("ground path", g.height, 1, 16), static_cast<std::size_t>(g.height) * 16})};
   return {};
 }
 
@@ -114,14 +130,28 @@ std::size_t NodePlan::free_for_buffers() const {
   return memory_bytes > used ? memory_bytes - used : 0;
 }
 
+std::size_t ProcessPlan::received_bytes() const {
+  std::size_t sum = 0;
+  for (const PlannedBuffer& b : buffers)
+    sum += b.received ? b.bytes : 0;
+  return sum;
+}
+
+std::size_t ProcessPlan::handed_bytes() const {
+  std::size_t sum = 0;
+  for (const PlannedBuffer& b : buffers)
+    sum += b.handed ? b.bytes : 0;
+  return sum;
+}
+
 // The cycle's stages run one after another, but each hands its output on while the next one
-// receives it: at the hand-over both hold their buffers. The node's peak is the largest such
-// pair (or the one process, if it is alone).
+// receives it: at the hand-over the one holds what it hands on and the other what it has
+// received. The node's peak is the largest process or hand-over.
 std::size_t NodePlan::buffer_bytes() const {
   std::size_t peak = 0;
   for (std::size_t i = 0; i < processes.size(); ++i) {
-    const std::size_t next = i + 1 < processes.size() ? processes[i + 1].buffer_bytes() : 0;
-    peak = std::max(peak, processes[i].buffer_bytes() + next);
+    const std::size_t next = i + 1 < processes.size() ? processes[i + 1].received_bytes() : 0;
+    peak = std::max({peak, processes[i].buffer_bytes(), processes[i].handed_bytes() + next});
   }
   return peak;
 }
@@ -162,7 +192,8 @@ MemoryPlan plan_with(const emulator::PlatformSpec& platform, const Placement& pl
   return plan;
 }
 
-// What the zones' node has beside the zones' own buffers, less a quarter.
+// Half of what the zones' node has beside the zones' own buffers: the other half is left to the
+// allocator's fragments (buffers come and go in the arena) and the kernels' smaller scratch.
 std::size_t zone_grid_budget(const MemoryPlan& plan) {
   for (const NodePlan& node : plan.nodes)
     for (const ProcessPlan& process : node.processes) {

@@ -70,6 +70,8 @@ bool same_as_nav_or_memory_fault(const Outcome& run, const fs::path& nav, const 
 
 TEST(EmulateCommand, WritesTheSamePathAndDisparityAsNavForWorldSeedsOnBothPlatforms) {
   int ran_on_card_at_128 = 0;
+  int ran_on_card_at_256 = 0;
+  int ran_onboard_at_128 = 0;
   for (const int size : {128, 256})
     for (int seed = 1; seed <= 20; ++seed) {
       const fs::path world =
@@ -89,12 +91,19 @@ TEST(EmulateCommand, WritesTheSamePathAndDisparityAsNavForWorldSeedsOnBothPlatfo
             emulate("--platform " + std::string(platform) + " --seed " + std::to_string(seed) +
                     " --size " + std::to_string(size) + " --out " + quoted(out));
         const bool ran = same_as_nav_or_memory_fault(run, nav, out, what);
-        if (ran && size == 128 && std::string(platform) == "pc-card")
-          ++ran_on_card_at_128;
+        const bool card = std::string(platform) == "pc-card";
+        ran_on_card_at_128 += ran && size == 128 && card ? 1 : 0;
+        ran_on_card_at_256 += ran && size == 256 && card ? 1 : 0;
+        ran_onboard_at_128 += ran && size == 128 && !card ? 1 : 0;
       }
     }
-  // The PC card's 2 MB holds the whole 128 x 128 cycle.
+  // The PC card's 2 MB hold the 128 x 128 cycle with the terrain's maps, and the 256 x 256 one
+  // with the terrain kept as the disparity; the onboard modules' 256 KB hold the 128 x 128
+  // cycle with the matcher's bands, the terrain as the disparity and the zones in strips (for
+  // the scenes whose memory the allocator does not fragment beyond use).
   EXPECT_EQ(ran_on_card_at_128, 20);
+  EXPECT_EQ(ran_on_card_at_256, 20);
+  EXPECT_GT(ran_onboard_at_128, 0);
 }
 
 TEST(EmulateCommand, GivenPairWithItsSceneEqualsTheRenderedScene) {

@@ -68,34 +68,39 @@ TEST(MemoryPlan, NodeFiguresAddCodeWorkspacesAndThePeakHandOver) {
   }
   EXPECT_EQ(node.code_bytes, code);
   EXPECT_EQ(node.free_for_buffers(), node.memory_bytes - 0x70U - code - workspace);
-  // zones (terrain 16 B + validity + zone map) hands over to path (terrain, zone map, sweep
-  // costs 4 B and steps 1 B): the largest pair of neighbours.
-  EXPECT_EQ(node.buffer_bytes(), 128U * 128U * ((16 + 1 + 1) + (16 + 1 + 4 + 1)));
+  // The largest hand-over is range's to zones: range still holds the seeable disparity (4 B),
+  // the validity (1 B) and the terrain maps (16 B) when zones has received the maps and the
+  // validity.
+  EXPECT_EQ(node.buffer_bytes(), 128U * 128U * ((4 + 1 + 16) + (16 + 1)));
   EXPECT_TRUE(node.fits());
 }
 
-TEST(MemoryPlan, OnboardModulesDoNotHoldTheWholeImageStages) {
+TEST(MemoryPlan, OnboardModulesHoldTheProgramWithBandsTheDisparityAndStrips) {
   const Shipped onboard = shipped("onboard");
   const MemoryPlan plan =
       plan_memory(onboard.platform, onboard.placement, 128, 128, 3, std::nullopt);
   ASSERT_EQ(plan.nodes.size(), 2U); // the cold spares run nothing
   EXPECT_EQ(plan.nodes[0].node, "module0");
   EXPECT_EQ(plan.nodes[1].node, "module1");
-  // The original layer matched band by band: module0 holds the matching half.
-  EXPECT_TRUE(plan.nodes[0].fits());
-  // Even with the terrain kept as the disparity, zones handing over to path hold 260 KB of
-  // images and maps (the disparity 4 B, validity, zone map and a terrain row, then the
-  // disparity, a terrain row, the zone map, sweep costs 4 B and steps 1 B); 246 KB are left.
+  // module0: features, holding everything, hands over to matching, which has received the
+  // left layer and both eyes' features (3 x 1 B).
+  EXPECT_EQ(plan.nodes[0].buffer_bytes(), 75776U + 3 * 16384U);
+  // module1: the four terrain maps alone are 256 KB, so the terrain is kept as the disparity;
+  // then refine's own buffers are the largest (left image, filled disparity 4 B, validity,
+  // texture mask, seeable disparity 4 B), above every hand-over (80 KB + 80 KB).
   EXPECT_FALSE(plan.terrain_kept);
-  EXPECT_EQ(plan.nodes[1].buffer_bytes(),
-            128U * 128U * ((4 + 1 + 1) + (4 + 1 + 4 + 1)) + 2 * 128U * 16);
-  EXPECT_FALSE(plan.nodes[1].fits());
-  EXPECT_FALSE(plan.fits());
-  // With 1 MB per module (a what-if) the plan fits, the terrain's maps kept.
+  EXPECT_EQ(plan.nodes[1].buffer_bytes(), 128U * 128U * (1 + 4 + 1 + 1 + 4));
+  EXPECT_TRUE(plan.fits());
+  // The zones' grid gets half of what module1 has beside the zones' own buffers (the
+  // disparity, a terrain row, the validity and the zone map).
+  const std::size_t zones = 128U * 128U * (4 + 1 + 1) + 128U * 16;
+  EXPECT_EQ(plan.zone_grid_bytes, (plan.nodes[1].free_for_buffers() - zones) / 2);
+  // With 1 MB per module (a what-if) the terrain's maps are kept and the grid is whole.
   const MemoryPlan roomy =
       plan_memory(onboard.platform, onboard.placement, 128, 128, 3, 1024 * 1024);
   EXPECT_TRUE(roomy.fits());
   EXPECT_TRUE(roomy.terrain_kept);
+  EXPECT_EQ(roomy.zone_grid_bytes, 0U);
 }
 
 TEST(MemoryPlan, TheTerrainIsKeptWhereTheMapsFitAndWorkedOutAgainWhereNot) {

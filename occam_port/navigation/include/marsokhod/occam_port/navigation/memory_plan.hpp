@@ -17,6 +17,8 @@ namespace marsokhod::occam_port {
 struct PlannedBuffer {
   std::string what; ///< "disparity, 128 rows x 128 px x 4 B"
   std::size_t bytes = 0;
+  bool received = false; ///< it arrived from the previous process
+  bool handed = false;   ///< still held while handing over to the next process
 };
 
 /// One process's share of its node: code, workspace and the buffers it holds at its peak.
@@ -26,6 +28,8 @@ struct ProcessPlan {
   std::size_t workspace_bytes = 0;
   std::vector<PlannedBuffer> buffers;
   std::size_t buffer_bytes() const;
+  std::size_t received_bytes() const; ///< of the buffers received
+  std::size_t handed_bytes() const;   ///< of the buffers held at the hand-over
 };
 
 /// One node's memory: what the program needs there and what is free for buffers.
@@ -38,8 +42,8 @@ struct NodePlan {
   std::vector<ProcessPlan> processes;
   /// Memory left for buffers after code and workspaces.
   std::size_t free_for_buffers() const;
-  /// The node's peak of buffers: the largest pair of consecutive processes, which both hold
-  /// theirs while one hands its output to the other.
+  /// The node's peak of buffers: the largest process's, or the largest hand-over between two
+  /// consecutive processes (what the one still holds and what the other has received).
   std::size_t buffer_bytes() const;
   bool fits() const { return buffer_bytes() <= free_for_buffers(); }
 };
@@ -56,8 +60,8 @@ struct MemoryPlan {
   bool terrain_kept = true;
   /// The bytes the zones' ground grid may take, strip by strip along the forward axis (each
   /// strip binned again with its halo); 0 for the whole grid at once. Set with the terrain kept
-  /// as the disparity: the zones' node's free memory beside the zones' own buffers, less a
-  /// quarter for the allocator's fragments and the kernels' smaller scratch.
+  /// as the disparity: half the zones' node's free memory beside the zones' own buffers, the other
+  /// half left to the allocator's fragments and the kernels' smaller scratch.
   std::size_t zone_grid_bytes = 0;
   std::vector<NodePlan> nodes;
   bool fits() const;
