@@ -27,6 +27,8 @@ class BandDp {
 public:
   BandDp(int width, int max_disparity, std::pmr::memory_resource* memory);
 
+  /// Room for bands of up to `cells` cells a line, taken at once.
+  void reserve(std::size_t cells) { forward_.reserve((cells + 2) * kBandRows); }
   /// `costs`: layout.total() cells of kBandRows lanes; `jumps`: for each pixel x, the large-step
   /// penalty between x - 1 and x of each lane ([x * kBandRows + lane]).
   void run(const BandLayout& layout, const std::uint16_t* costs, const std::uint16_t* jumps,

@@ -91,6 +91,25 @@ std::array<std::int16_t, kBandRows> band_unseen(std::span<const std::int16_t> un
   return lanes;
 }
 
+// The most cells a band of the layer lays out: with a guide, the largest of its bands' layouts;
+// without one, each column's whole search range. The band buffers are reserved for it once, so
+// that growing them band after band leaves no holes behind in the memory they come from.
+std::size_t most_cells(const LayerInput& input, const StereoOptions& options, int bands,
+                       BandWorkspace& band) {
+  const int width = input.left.width();
+  if (input.guide == nullptr)
+    return static_cast<std::size_t>(width) *
+           static_cast<std::size_t>(input.limits.high - input.limits.low + 1);
+  std::size_t most = 0;
+  for (int step = 0; step < bands; ++step) {
+    input.guide->wanted(step * kBandRows, width, options.search_band, band.wanted_low,
+                        band.wanted_high);
+    band.layout.lay_out(width, input.limits, band.wanted_low, band.wanted_high);
+    most = std::max(most, band.layout.total());
+  }
+  return most;
+}
+
 // The whole layer, or one band's rows when the layer goes out band by band.
 LayerOutput layer_output(const LayerInput& input, std::pmr::memory_resource* memory) {
   const int width = input.left.width();
@@ -123,6 +142,9 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
   const bool prior = options.ground_prior && input.guide == nullptr;
   const int bands = (height + kBandRows - 1) / kBandRows;
   int bound = input.limits.high;
+  const std::size_t most = most_cells(input, options, bands, band);
+  band.costs.reserve(most * kBandRows);
+  dp.reserve(most);
   for (int step = 0; step < bands; ++step) {
     // With the prior the bands go bottom-up, so each is bounded by the one below it.
     const int y0 = (prior ? bands - 1 - step : step) * kBandRows;

@@ -99,11 +99,10 @@ TEST(EmulateCommand, WritesTheSamePathAndDisparityAsNavForWorldSeedsOnBothPlatfo
     }
   // The PC card's 2 MB hold the 128 x 128 cycle with the terrain's maps, and the 256 x 256 one
   // with the terrain kept as the disparity; the onboard modules' 256 KB hold the 128 x 128
-  // cycle with the matcher's bands, the terrain as the disparity and the zones in strips (for
-  // the scenes whose memory the allocator does not fragment beyond use).
+  // cycle with the matcher's bands, the terrain as the disparity and the zones in strips.
   EXPECT_EQ(ran_on_card_at_128, 20);
   EXPECT_EQ(ran_on_card_at_256, 20);
-  EXPECT_GT(ran_onboard_at_128, 0);
+  EXPECT_EQ(ran_onboard_at_128, 20);
 }
 
 TEST(EmulateCommand, GivenPairWithItsSceneEqualsTheRenderedScene) {
