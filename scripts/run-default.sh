@@ -1,13 +1,14 @@
 #!/bin/sh
 # The main job of `make run`: renders the default synthetic Mars scene with its ground truth,
 # runs one navigation cycle on the rendered pair, then the same cycle at 128 x 128 as OCCAM
-# processes on the emulated PC transputer card.
+# processes on the emulated PC transputer card and on the rover's onboard computer.
 set -eu
 marsokhod="$1"
 out="$2"
 world_dir="$out/world-seed3"
 nav_dir="$out/nav-seed3"
 emulate_dir="$out/emulate-pc-card-seed3"
+onboard_dir="$out/emulate-onboard-seed3"
 
 "$marsokhod" world --seed 3 --size 256 --out "$world_dir"
 echo
@@ -17,7 +18,10 @@ echo
 "$marsokhod" emulate --platform pc-card --seed 3 --size 128 --out "$emulate_dir" \
   --trace "$emulate_dir/trace.json"
 echo
-echo "make run: results are in $world_dir, $nav_dir and $emulate_dir"
+"$marsokhod" emulate --platform onboard --seed 3 --size 128 --out "$onboard_dir" \
+  --trace "$onboard_dir/trace.json"
+echo
+echo "make run: results are in $world_dir, $nav_dir, $emulate_dir and $onboard_dir"
 echo "  $world_dir:"
 echo "    left.png / right.png              the rendered stereo pair"
 echo "    gt_disparity.png, gt_range.png    ground truth, false colour with a legend"
@@ -31,3 +35,6 @@ echo "    path.json                         path, start/fracture/target distance
 echo "  $emulate_dir:"
 echo "    the same products as nav, from the emulated cycle at 128 x 128 on the PC card"
 echo "    trace.json                        the cycle in Perfetto (ui.perfetto.dev): CPUs, stages, links, memory"
+echo "  $onboard_dir:"
+echo "    the same again on the onboard computer's two 256 KB modules (terrain and zones"
+echo "    worked out again where the memory cannot keep them), with its trace.json"
