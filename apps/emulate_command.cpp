@@ -3,6 +3,7 @@
 
 #include "command.hpp"
 #include "emulate_report.hpp"
+#include "emulate_sweep.hpp"
 #include "nav_outputs.hpp"
 #include "option_checks.hpp"
 #include "pair_inputs.hpp"
@@ -35,6 +36,7 @@ struct EmulateCli {
   std::string platform;
   std::optional<fs::path> placement;
   std::optional<std::uint64_t> external_kb;
+  std::vector<std::uint64_t> sweep_kb;
   fs::path out = "emulate-out";
   std::optional<std::string> trace;
   PairOptions given;
@@ -112,6 +114,41 @@ void print_summary(const occam_port::CycleEmulation& run, const EmulationSubject
   fmt::print("{}", emulation_tables(run));
 }
 
+// The external memory of the platform's first powered node, KB, as shipped.
+std::uint64_t shipped_external_kb(const emu::PlatformSpec& platform) {
+  for (const emu::NodeSpec& node : platform.nodes)
+    if (node.powered)
+      return node.memory.external_bytes / 1024;
+  return 0;
+}
+
+int run_sweep(const EmulateCli& cli, const emu::PlatformSpec& platform,
+              const occam_port::CycleInput& input, occam_port::CycleSetup setup,
+              const EmulationSubject& subject) {
+  if (cli.external_kb || cli.trace)
+    throw UsageError("--sweep-external-kb runs one cycle per memory size: it takes neither "
+                     "--external-kb nor --trace");
+  std::vector<SweepPoint> points;
+  try {
+    points = sweep_external_memory(input, setup, cli.sweep_kb, cli.json);
+  } catch (const std::invalid_argument& error) {
+    throw CommandError(fmt::format("{}: {}", subject.pair, error.what()));
+  }
+  const auto written = write_sweep(cli.out, points, subject, shipped_external_kb(platform));
+  if (cli.json) {
+    nlohmann::ordered_json json = sweep_json(points, subject);
+    for (const auto& [key, path] : written)
+      json["outputs"][key] = path.string();
+    fmt::print("{}\n", json.dump(2));
+    return kSuccess;
+  }
+  fmt::print("marsokhod emulate: {} on {} ({}), placement {}\n", subject.pair, subject.platform,
+             subject.platform_file, subject.placement_file);
+  fmt::print("{}wrote sweep.csv, sweep.json and sweep.png to {}\n", sweep_table(points),
+             cli.out.string());
+  return kSuccess;
+}
+
 int run_emulate(const EmulateCli& cli) {
   const emu::PlatformSpec platform = platform_for(cli.platform);
   const fs::path placement_file =
@@ -124,6 +161,10 @@ int run_emulate(const EmulateCli& cli) {
   occam_port::CycleInput input{pair.left, pair.right, pair.rig.get(), {}};
   input.options.attitude = pair.attitude;
   occam_port::CycleSetup setup{&platform, &placement, std::nullopt, nullptr};
+  if (!cli.sweep_kb.empty())
+    return run_sweep(cli, platform, input, setup,
+                     EmulationSubject{platform.name, platform.source, placement_file.string(),
+                                      pair.description});
   if (cli.external_kb)
     setup.external_bytes = static_cast<std::size_t>(*cli.external_kb) * 1024;
   const auto start = std::chrono::steady_clock::now();
@@ -182,6 +223,12 @@ Command make_emulate_command(CLI::App& parent) {
   app->add_option("--external-kb", cli->external_kb,
                   "Replace every node's external memory by this many KB (what-if)")
       ->transform(integer_between<std::uint64_t>(0, 4194300));
+  app->add_option("--sweep-external-kb", cli->sweep_kb,
+                  "Run the cycle once for each of these external memory sizes, KB, comma-separated "
+                  "(e.g. 64,128,256,512,1024,2048,4096), and write sweep.csv, sweep.json and "
+                  "sweep.png")
+      ->delimiter(',')
+      ->transform(integer_between<std::uint64_t>(1, 4194300));
   app->add_option("--out", cli->out, "Output folder (created if missing)")->capture_default_str();
   app->add_option("--trace", cli->trace, "Write a Chrome trace (Perfetto) of the cycle here");
   add_pair_options(*app, cli->given);

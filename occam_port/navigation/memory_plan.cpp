@@ -214,10 +214,11 @@ MemoryPlan plan_memory(const emulator::PlatformSpec& platform, const Placement& 
   const Geometry geometry{width, height, pyramid_levels};
   // The terrain's four maps are kept where the nodes hold them; otherwise only the disparity,
   // and its rows are worked out again where they are read.
-  MemoryPlan kept = plan_with(platform, placement, geometry, external_bytes, true);
-  if (kept.fits())
-    return kept;
-  MemoryPlan plan = plan_with(platform, placement, geometry, external_bytes, false);
+  MemoryPlan plan = plan_with(platform, placement, geometry, external_bytes, true);
+  if (!plan.fits())
+    plan = plan_with(platform, placement, geometry, external_bytes, false);
+  // The grid's size follows the ground in view, which no plan knows: it gets a budget, and
+  // the zones cut it into as many strips as the budget needs (one where it holds it all).
   plan.zone_grid_bytes = zone_grid_budget(plan);
   return plan;
 }

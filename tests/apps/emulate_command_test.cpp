@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <regex>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -20,7 +22,9 @@ using marsokhod::testing::run_marsokhod;
 using marsokhod::testing::slurp;
 
 fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "marsokhod-emulate-tests" / name;
+  // One root per test process: ctest runs this file's tests side by side.
+  const fs::path dir =
+      fs::temp_directory_path() / ("marsokhod-emulate-tests-" + std::to_string(::getpid())) / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -204,6 +208,37 @@ TEST(EmulateCommand, TraceHasATrackPerCpuStageAndLinkDirection) {
     EXPECT_NE(std::find(threads.begin(), threads.end(), track), threads.end()) << track;
 }
 
+TEST(EmulateCommand, SweepRunsOneCyclePerMemorySizeAndWritesItsTableAndPicture) {
+  const fs::path out = fresh_folder("sweep");
+  const Outcome sweep =
+      emulate("--platform onboard --seed 1 --sweep-external-kb 32,256,1024 --out " + quoted(out));
+  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
+  const nlohmann::json& points = sweep.summary["sweep"];
+  ASSERT_EQ(points.size(), 3U);
+  EXPECT_EQ(points[0]["external_kb"], 32);
+  // 32 KB cannot hold the first image: no time, the fault named.
+  EXPECT_TRUE(points[0]["emulated_seconds"].is_null());
+  EXPECT_EQ(points[0]["memory_fault"]["node"], "module0");
+  // 256 KB, as shipped, is the same cycle as a plain run; 1 MB keeps the terrain's maps and
+  // does less again, so it is faster.
+  const Outcome plain = emulate("--platform onboard --seed 1 --out " + quoted(fresh_folder("p")));
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(points[1]["emulated_seconds"], plain.summary["emulated_seconds"]);
+  EXPECT_FALSE(points[1]["terrain_kept"].get<bool>());
+  EXPECT_GT(points[1]["recomputed_units"].get<std::uint64_t>(), 0U);
+  EXPECT_TRUE(points[2]["terrain_kept"].get<bool>());
+  EXPECT_LT(points[2]["emulated_seconds"].get<double>(),
+            points[1]["emulated_seconds"].get<double>());
+  EXPECT_LT(points[2]["recomputed_units"].get<std::uint64_t>(),
+            points[1]["recomputed_units"].get<std::uint64_t>());
+  // The files: the JSON printed, a CSV line per size, a PNG picture.
+  EXPECT_EQ(nlohmann::json::parse(slurp(out / "sweep.json"))["sweep"], points);
+  const std::string csv = slurp(out / "sweep.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
+  EXPECT_EQ(csv.rfind("external_kb,emulated_seconds,memory_fault", 0), 0U);
+  EXPECT_EQ(slurp(out / "sweep.png").substr(1, 3), "PNG");
+}
+
 TEST(EmulateCommand, RefusesWhatItCannotRun) {
   const fs::path out = fresh_folder("refusals");
   const struct {
@@ -219,6 +254,13 @@ TEST(EmulateCommand, RefusesWhatItCannotRun) {
       {"--platform pc-card --placement /nonexistent.toml --out " + quoted(out), 1,
        "/nonexistent.toml"},
       {"--platform pc-card --external-kb -5 --out " + quoted(out), 2, "--external-kb"},
+      {"--platform onboard --sweep-external-kb 64,abc --out " + quoted(out), 2,
+       "--sweep-external-kb"},
+      {"--platform onboard --sweep-external-kb 0 --out " + quoted(out), 2, "--sweep-external-kb"},
+      {"--platform onboard --sweep-external-kb 64 --trace t.json --out " + quoted(out), 2,
+       "neither --external-kb nor --trace"},
+      {"--platform onboard --sweep-external-kb 64 --external-kb 64 --out " + quoted(out), 2,
+       "neither --external-kb nor --trace"},
   };
   for (const auto& c : cases) {
     const auto result = run_marsokhod("emulate " + c.arguments);

@@ -58,10 +58,11 @@ struct MemoryPlan {
   /// Whether the stages after range keep the terrain's four maps; when they would not fit, only
   /// the disparity is kept and its rows are worked out again where they are read.
   bool terrain_kept = true;
-  /// The bytes the zones' ground grid may take, strip by strip along the forward axis (each
-  /// strip binned again with its halo); 0 for the whole grid at once. Set with the terrain kept
-  /// as the disparity: half the zones' node's free memory beside the zones' own buffers, the other
-  /// half left to the allocator's fragments and the kernels' smaller scratch.
+  /// The bytes the zones' ground grid may take: half the zones' node's free memory beside the
+  /// zones' own buffers, the other half left to the allocator's fragments and the kernels'
+  /// smaller scratch. The zones cut the grid into strips along the forward axis that fit it
+  /// (each binned again with its halo), one strip where it holds the whole grid; 0 for the
+  /// whole grid at once, as natively.
   std::size_t zone_grid_bytes = 0;
   std::vector<NodePlan> nodes;
   bool fits() const;

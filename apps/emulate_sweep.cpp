@@ -1,0 +1,143 @@
+// The cycle's time against the nodes' external memory: each size one emulated cycle.
+
+#include "emulate_sweep.hpp"
+
+#include "command.hpp"
+
+#include "marsokhod/imaging/image/image_io.hpp"
+#include "marsokhod/imaging/pictures/line_chart.hpp"
+#include "marsokhod/io/files/file_writer.hpp"
+
+#include <fmt/format.h>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string fault_text(const SweepPoint& p) {
+  if (!p.memory_fault)
+    return "";
+  return fmt::format("{} {} wanted {} B for {}", p.memory_fault->node, p.memory_fault->process,
+                     p.memory_fault->requested_bytes, p.memory_fault->what);
+}
+
+// CSV fields are quoted, with quotes doubled.
+std::string csv_quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text)
+    out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + '"';
+}
+
+imaging::LineChart chart_of(const std::vector<SweepPoint>& points, const EmulationSubject& subject,
+                            std::uint64_t shipped_external_kb) {
+  imaging::LineChart chart;
+  chart.title = fmt::format("one cycle on {}, {}", subject.platform, subject.pair);
+  chart.x_label = "external memory per node, kb (log scale). x: the cycle does not fit";
+  chart.y_label = "emulated s";
+  for (const SweepPoint& p : points) {
+    const auto kb = static_cast<double>(std::max<std::uint64_t>(p.external_kb, 1));
+    if (p.memory_fault)
+      chart.missing.push_back(kb);
+    else
+      chart.points.push_back({kb, p.emulated_seconds});
+  }
+  if (shipped_external_kb > 0)
+    chart.marks.push_back(
+        {static_cast<double>(shipped_external_kb), fmt::format("{} as shipped", subject.platform)});
+  return chart;
+}
+
+} // namespace
+
+std::vector<SweepPoint> sweep_external_memory(const occam_port::CycleInput& input,
+                                              occam_port::CycleSetup setup,
+                                              const std::vector<std::uint64_t>& external_kb,
+                                              bool quiet) {
+  std::vector<SweepPoint> points;
+  for (std::size_t i = 0; i < external_kb.size(); ++i) {
+    setup.external_bytes = static_cast<std::size_t>(external_kb[i]) * 1024;
+    const occam_port::CycleEmulation run = occam_port::emulate_navigation_cycle(input, setup);
+    SweepPoint point{external_kb[i],           emulator::to_seconds(run.emulated),
+                     run.memory_fault,         run.plan.terrain_kept,
+                     run.plan.zone_grid_bytes, run.recomputed_work.total()};
+    if (!quiet)
+      fmt::print(stderr, "sweep {}/{}: {} KB: {}\n", i + 1, external_kb.size(), point.external_kb,
+                 point.memory_fault ? "memory fault, " + fault_text(point)
+                                    : fmt::format("{:.3f} s", point.emulated_seconds));
+    points.push_back(std::move(point));
+  }
+  return points;
+}
+
+std::string sweep_table(const std::vector<SweepPoint>& points) {
+  std::string text = "external KB  emulated s  terrain     zones grid  recomputed units\n";
+  for (const SweepPoint& p : points) {
+    const std::string grid =
+        p.zone_grid_bytes > 0 ? fmt::format("{} B", p.zone_grid_bytes) : std::string("whole");
+    text +=
+        fmt::format("{:>11}  {:>10}  {:<10}  {:>10}  {:>16}{}\n", p.external_kb,
+                    p.memory_fault ? std::string("-") : fmt::format("{:.3f}", p.emulated_seconds),
+                    p.terrain_kept ? "four maps" : "disparity", grid, p.recomputed_units,
+                    p.memory_fault ? "  does not fit: " + fault_text(p) : std::string());
+  }
+  return text;
+}
+
+nlohmann::ordered_json sweep_json(const std::vector<SweepPoint>& points,
+                                  const EmulationSubject& subject) {
+  nlohmann::ordered_json json;
+  json["platform"] = subject.platform;
+  json["platform_file"] = subject.platform_file;
+  json["placement_file"] = subject.placement_file;
+  json["pair"] = subject.pair;
+  json["sweep"] = nlohmann::ordered_json::array();
+  for (const SweepPoint& p : points) {
+    nlohmann::ordered_json point{{"external_kb", p.external_kb}};
+    point["emulated_seconds"] = p.memory_fault ? nlohmann::ordered_json(nullptr)
+                                               : nlohmann::ordered_json(p.emulated_seconds);
+    point["memory_fault"] = nullptr;
+    if (p.memory_fault)
+      point["memory_fault"] = {{"node", p.memory_fault->node},
+                               {"process", p.memory_fault->process},
+                               {"requested_bytes", p.memory_fault->requested_bytes},
+                               {"what", p.memory_fault->what}};
+    point["terrain_kept"] = p.terrain_kept;
+    point["zone_grid_bytes"] = p.zone_grid_bytes;
+    point["recomputed_units"] = p.recomputed_units;
+    json["sweep"].push_back(point);
+  }
+  return json;
+}
+
+std::string sweep_csv(const std::vector<SweepPoint>& points) {
+  std::string csv = "external_kb,emulated_seconds,memory_fault,terrain_kept,zone_grid_bytes,"
+                    "recomputed_units\n";
+  for (const SweepPoint& p : points)
+    csv += fmt::format("{},{},{},{},{},{}\n", p.external_kb,
+                       p.memory_fault ? std::string() : fmt::format("{:.9f}", p.emulated_seconds),
+                       csv_quoted(fault_text(p)), p.terrain_kept ? 1 : 0, p.zone_grid_bytes,
+                       p.recomputed_units);
+  return csv;
+}
+
+std::map<std::string, fs::path> write_sweep(const fs::path& folder,
+                                            const std::vector<SweepPoint>& points,
+                                            const EmulationSubject& subject,
+                                            std::uint64_t shipped_external_kb) {
+  std::map<std::string, fs::path> written{{"sweep_csv", folder / "sweep.csv"},
+                                          {"sweep_json", folder / "sweep.json"},
+                                          {"sweep_png", folder / "sweep.png"}};
+  try {
+    io::write_file_atomically(written["sweep_csv"], sweep_csv(points));
+    io::write_file_atomically(written["sweep_json"], sweep_json(points, subject).dump(2) + '\n');
+    imaging::write_image(written["sweep_png"],
+                         imaging::draw_line_chart(chart_of(points, subject, shipped_external_kb)));
+  } catch (const std::exception& error) {
+    throw CommandError(error.what());
+  }
+  return written;
+}
+
+} // namespace marsokhod::apps
