@@ -63,6 +63,16 @@ nlohmann::ordered_json plan_json(const occam_port::MemoryPlan& plan) {
 
 } // namespace
 
+nlohmann::ordered_json
+memory_fault_json(const std::optional<occam_port::MemoryFaultFigures>& fault) {
+  if (!fault)
+    return nullptr;
+  return {{"node", fault->node},
+          {"process", fault->process},
+          {"requested_bytes", fault->requested_bytes},
+          {"what", fault->what}};
+}
+
 std::string memory_fault_message(const occam_port::MemoryFaultFigures& fault) {
   return fmt::format("memory fault on {}: process {} wanted {} B for {}; {} B were free, the "
                      "largest free block {} B",
@@ -125,12 +135,7 @@ nlohmann::ordered_json emulation_json(const CycleEmulation& run, const Emulation
     json["links"].push_back(
         {{"from", l.from}, {"to", l.to}, {"bytes", l.bytes}, {"busy_seconds", seconds(l.busy)}});
   json["memory_plan"] = plan_json(run.plan);
-  json["memory_fault"] = nullptr;
-  if (run.memory_fault)
-    json["memory_fault"] = {{"node", run.memory_fault->node},
-                            {"process", run.memory_fault->process},
-                            {"requested_bytes", run.memory_fault->requested_bytes},
-                            {"what", run.memory_fault->what}};
+  json["memory_fault"] = memory_fault_json(run.memory_fault);
   json["found"] = run.result && run.result->found();
   if (run.result && !run.result->found())
     json["reason"] = run.result->reason();

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace marsokhod::apps {
@@ -29,5 +30,9 @@ nlohmann::ordered_json emulation_json(const occam_port::CycleEmulation& run,
 
 /// "memory fault on module1: process zones wanted 65536 B for terrain forward, ...".
 std::string memory_fault_message(const occam_port::MemoryFaultFigures& fault);
+
+/// The JSON `memory_fault`: {node, process, requested_bytes, what}, or null without one.
+nlohmann::ordered_json
+memory_fault_json(const std::optional<occam_port::MemoryFaultFigures>& fault);
 
 } // namespace marsokhod::apps

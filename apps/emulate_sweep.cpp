@@ -16,10 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string fault_text(const SweepPoint& p) {
-  if (!p.memory_fault)
-    return "";
-  return fmt::format("{} {} wanted {} B for {}", p.memory_fault->node, p.memory_fault->process,
-                     p.memory_fault->requested_bytes, p.memory_fault->what);
+  return p.memory_fault ? memory_fault_message(*p.memory_fault) : std::string();
 }
 
 // CSV fields are quoted, with quotes doubled.
@@ -64,7 +61,7 @@ std::vector<SweepPoint> sweep_external_memory(const occam_port::CycleInput& inpu
                      run.plan.zone_grid_bytes, run.recomputed_work.total()};
     if (!quiet)
       fmt::print(stderr, "sweep {}/{}: {} KB: {}\n", i + 1, external_kb.size(), point.external_kb,
-                 point.memory_fault ? "memory fault, " + fault_text(point)
+                 point.memory_fault ? fault_text(point)
                                     : fmt::format("{:.3f} s", point.emulated_seconds));
     points.push_back(std::move(point));
   }
@@ -97,12 +94,7 @@ nlohmann::ordered_json sweep_json(const std::vector<SweepPoint>& points,
     nlohmann::ordered_json point{{"external_kb", p.external_kb}};
     point["emulated_seconds"] = p.memory_fault ? nlohmann::ordered_json(nullptr)
                                                : nlohmann::ordered_json(p.emulated_seconds);
-    point["memory_fault"] = nullptr;
-    if (p.memory_fault)
-      point["memory_fault"] = {{"node", p.memory_fault->node},
-                               {"process", p.memory_fault->process},
-                               {"requested_bytes", p.memory_fault->requested_bytes},
-                               {"what", p.memory_fault->what}};
+    point["memory_fault"] = memory_fault_json(p.memory_fault);
     point["terrain_kept"] = p.terrain_kept;
     point["zone_grid_bytes"] = p.zone_grid_bytes;
     point["recomputed_units"] = p.recomputed_units;

@@ -6,7 +6,6 @@
 #include "zones/zone_bounds.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -80,6 +79,8 @@ void lattice_cells(const TerrainRows::Row& row, const GroundLattice& lattice, in
 // points on a regular lattice of the cell's pitch fall into cells one to one.
 GroundLattice lattice_of(const GroundBounds& b, double cell, float max_range) {
   GroundLattice lattice;
+  lattice.along.cell = cell;
+  lattice.across.cell = cell;
   lattice.max_range = max_range;
   if (b.empty())
     return lattice;
@@ -105,7 +106,7 @@ GroundLattice ground_lattice(const TerrainRows& terrain,
 GroundGrid::GroundGrid(const TerrainRows& terrain, imaging::ImageView<const std::uint8_t> zone,
                        double cell_m, double max_range_m, std::pmr::memory_resource* memory,
                        std::uint64_t& work)
-    : cell_(cell_m), width_(terrain.width()),
+    : width_(terrain.width()),
       pixel_cell_(static_cast<std::size_t>(terrain.width()) * terrain.height(), memory),
       highest_(memory), lowest_(memory), sum_(memory), count_(memory) {
   const imaging::Image<std::uint8_t> own =
@@ -113,7 +114,7 @@ GroundGrid::GroundGrid(const TerrainRows& terrain, imaging::ImageView<const std:
   const auto max_range = static_cast<float>(max_range_m);
   const GroundBounds b = mark_binned(terrain, zone.channels() == 1 ? zone : own.view(), max_range,
                                      pixel_cell_.data(), width_);
-  lattice_ = lattice_of(b, cell_, max_range);
+  lattice_ = lattice_of(b, cell_m, max_range);
   if (lattice_.empty()) {
     std::fill(pixel_cell_.data(), pixel_cell_.data() + pixel_cell_.size(), kNotBinned);
     return;
@@ -128,10 +129,10 @@ GroundGrid::GroundGrid(const TerrainRows& terrain, imaging::ImageView<const std:
                        const GroundLattice& lattice, const GridColumns& columns,
                        std::pmr::memory_resource* memory, std::uint64_t& work,
                        std::uint64_t& halo_work)
-    : lattice_(lattice), cell_(lattice.along.cell), lo_(columns.lo), nx_(columns.hi - columns.lo),
-      ny_(lattice.across.n), own_begin_(columns.own_begin - columns.lo),
-      own_end_(columns.own_end - columns.lo), width_(terrain.width()), pixel_cell_(memory),
-      highest_(memory), lowest_(memory), sum_(memory), count_(memory) {
+    : lattice_(lattice), lo_(columns.lo), nx_(columns.hi - columns.lo), ny_(lattice.across.n),
+      own_begin_(columns.own_begin - columns.lo), own_end_(columns.own_end - columns.lo),
+      width_(terrain.width()), pixel_cell_(memory), highest_(memory), lowest_(memory), sum_(memory),
+      count_(memory) {
   if (lattice.empty())
     return;
   allocate_cells();

@@ -46,7 +46,7 @@ public:
 
   int nx() const { return nx_; } ///< cells along the forward axis
   int ny() const { return ny_; } ///< cells along the lateral axis
-  double cell() const { return cell_; }
+  double cell() const { return lattice_.along.cell; }
   bool empty() const { return nx_ == 0 || ny_ == 0; }
   /// The own columns, as this grid's columns.
   int own_begin() const { return own_begin_; }
@@ -87,7 +87,6 @@ private:
   }
 
   GroundLattice lattice_;
-  double cell_ = 0.1;
   int lo_ = 0;
   int nx_ = 0;
   int ny_ = 0;

@@ -76,7 +76,7 @@ CellFlags near_cells(const GroundGrid& grid, const CellFlags& obstacle, const Zo
   // of cells a stamp around each obstacle cell would cover, as the union over the disc's rows of
   // the obstacle flags grown along the rows by that row's half-run and moved across by its dy.
   const double reach = options.rover_half_width_m / grid.cell();
-  const int r = static_cast<int>(std::floor(reach));
+  const int r = margin_cells(grid.cell(), options);
   const std::pmr::vector<int> half_run = disc_half_runs(r, reach, memory);
   const auto disc = static_cast<std::uint64_t>(2 * r + 1) * static_cast<std::uint64_t>(2 * r + 1);
   tests.own += own_obstacles * disc;

@@ -12,6 +12,7 @@
 #include "marsokhod/nav/zones/zones.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory_resource>
 
@@ -65,6 +66,12 @@ inline int cells_within(const GroundGrid& grid, double distance_m) {
 int cells_apart_within(double cell_m, double distance_m);
 inline int cells_apart_within(const GroundGrid& grid, double distance_m) {
   return cells_apart_within(grid.cell(), distance_m);
+}
+
+/// Cells of the margin's reach: every cell whose centre lies within rover_half_width_m of an
+/// obstacle cell's lies within this many cells of it along each axis.
+inline int margin_cells(double cell_m, const ZoneOptions& options) {
+  return static_cast<int>(std::floor(options.rover_half_width_m / cell_m));
 }
 
 /// Columns around a strip of the grid whose cells the rules of the strip's own cells read: the

@@ -82,9 +82,9 @@ int cells_apart_within(double cell_m, double distance_m) {
 }
 
 int halo_columns(double cell_m, const ZoneOptions& options) {
-  const int margin = static_cast<int>(std::floor(options.rover_half_width_m / cell_m));
-  return margin + std::max(cells_within(cell_m, 0.5 * options.slope_baseline_m),
-                           cells_apart_within(cell_m, options.step_baseline_m));
+  return margin_cells(cell_m, options) +
+         std::max(cells_within(cell_m, 0.5 * options.slope_baseline_m),
+                  cells_apart_within(cell_m, options.step_baseline_m));
 }
 
 StepWindow step_window(const GroundGrid& grid, const ZoneOptions& options,

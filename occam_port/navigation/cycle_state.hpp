@@ -47,11 +47,9 @@ struct CycleState {
   int height = 0;
   const imaging::StereoRig* rig = nullptr;
   nav::NavigationOptions options;
-  /// Whether the processes after range keep the terrain's four maps (the memory plan's choice)
-  /// or only the disparity, working its rows out again where they read them.
-  bool terrain_kept = true;
-  /// The zones' ground grid budget, strip by strip (0: whole; the memory plan's).
-  std::size_t zone_grid_bytes = 0;
+  /// The memory plan the program was built to: whether the processes after range keep the
+  /// terrain's four maps, and the zones' ground grid budget.
+  const MemoryPlan* plan = nullptr;
   emulator::Kernel* kernel = nullptr;
   CycleChannels channels;
   /// Each node's link to the devices (frame store, host), if it has one.

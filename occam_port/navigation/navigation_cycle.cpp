@@ -225,8 +225,7 @@ CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetu
   cycle.height = input.left.height();
   cycle.rig = input.rig;
   cycle.options = input.options;
-  cycle.terrain_kept = out.plan.terrain_kept;
-  cycle.zone_grid_bytes = out.plan.zone_grid_bytes;
+  cycle.plan = &out.plan;
   detail::CycleAccounting accounting(setup.trace);
   Network net;
   cycle.kernel = &net.kernel;

@@ -69,12 +69,13 @@ void range(ProcessContext& c) {
 nav::ZoneMap zone_map(ProcessContext& c, const nav::TerrainRows& terrain) {
   CycleState& s = c.cycle();
   const U8Image valid = receive_bytes(c, s.channels.terrain, "validity", s.width, s.height);
-  c.doing(s.zone_grid_bytes > 0 ? fmt::format("prohibited zones: a strip of the ground grid "
-                                              "(at most {} B) and the zone map",
-                                              s.zone_grid_bytes)
-                                : std::string("prohibited zones: ground grid and zone map"));
+  const std::size_t grid_bytes = s.plan->zone_grid_bytes;
+  c.doing(grid_bytes > 0 ? fmt::format("prohibited zones: a strip of the ground grid "
+                                       "(at most {} B) and the zone map",
+                                       grid_bytes)
+                         : std::string("prohibited zones: ground grid and zone map"));
   return nav::find_zones(terrain, valid, s.options.zones, c.meter(), c.memory(),
-                         nav::ZoneStrips{0, s.zone_grid_bytes, &c.recompute_meter()});
+                         nav::ZoneStrips{0, grid_bytes, &c.recompute_meter()});
 }
 
 void zones(ProcessContext& c) {

@@ -26,7 +26,7 @@ NodeTerrain::NodeTerrain(ProcessContext& c, BlockChannel& channel)
             FloatImage(c.memory()), 0},
       seeable_(c.memory()) {
   const CycleState& s = c.cycle();
-  if (s.terrain_kept) {
+  if (s.plan->terrain_kept) {
     maps_.forward = receive_floats(c, channel, "terrain forward");
     maps_.left = receive_floats(c, channel, "terrain left");
     maps_.elevation = receive_floats(c, channel, "terrain elevation");
@@ -58,7 +58,7 @@ void NodeTerrain::send(BlockChannel& channel) const {
 
 void make_and_send_terrain(ProcessContext& c, const FloatImage& seeable, BlockChannel& channel) {
   CycleState& s = c.cycle();
-  if (s.terrain_kept) {
+  if (s.plan->terrain_kept) {
     c.doing(image_what("terrain points (forward, left, elevation, range)", s.width, s.height, 16));
     const nav::TerrainPoints terrain =
         nav::reconstruct_terrain(seeable, *s.rig, s.options.attitude, c.meter(), c.memory());
