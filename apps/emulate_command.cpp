@@ -37,6 +37,7 @@ struct EmulateCli {
   std::optional<fs::path> placement;
   std::optional<std::uint64_t> external_kb;
   std::vector<std::uint64_t> sweep_kb;
+  double occam_style = occam_port::kOccamStyleFactor;
   fs::path out = "emulate-out";
   std::optional<std::string> trace;
   PairOptions given;
@@ -134,7 +135,10 @@ int run_sweep(const EmulateCli& cli, const emu::PlatformSpec& platform,
   } catch (const std::invalid_argument& error) {
     throw CommandError(fmt::format("{}: {}", subject.pair, error.what()));
   }
-  const auto written = write_sweep(cli.out, points, subject, shipped_external_kb(platform));
+  std::vector<imaging::LineChart::Mark> marks;
+  if (const std::uint64_t kb = shipped_external_kb(platform); kb > 0)
+    marks.push_back({static_cast<double>(kb), fmt::format("{} as shipped", subject.platform)});
+  const auto written = write_sweep(cli.out, points, subject, marks);
   if (cli.json) {
     nlohmann::ordered_json json = sweep_json(points, subject);
     for (const auto& [key, path] : written)
@@ -160,7 +164,7 @@ int run_emulate(const EmulateCli& cli) {
 
   occam_port::CycleInput input{pair.left, pair.right, pair.rig.get(), {}};
   input.options.attitude = pair.attitude;
-  occam_port::CycleSetup setup{&platform, &placement, std::nullopt, nullptr};
+  occam_port::CycleSetup setup{&platform, &placement, std::nullopt, nullptr, cli.occam_style};
   if (!cli.sweep_kb.empty())
     return run_sweep(cli, platform, input, setup,
                      EmulationSubject{platform.name, platform.source, placement_file.string(),
@@ -229,6 +233,11 @@ Command make_emulate_command(CLI::App& parent) {
                   "sweep.png")
       ->delimiter(',')
       ->transform(integer_between<std::uint64_t>(1, 4194300));
+  app->add_option("--occam-style", cli->occam_style,
+                  "Cycles of the program's occam per unit of work over the cost table's (the "
+                  "model's fitted constant, docs/timing.md; 1 is the table's careful style)")
+      ->capture_default_str()
+      ->check(real_between(0.01, 100.0));
   app->add_option("--out", cli->out, "Output folder (created if missing)")->capture_default_str();
   app->add_option("--trace", cli->trace, "Write a Chrome trace (Perfetto) of the cycle here");
   add_pair_options(*app, cli->given);

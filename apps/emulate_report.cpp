@@ -134,6 +134,7 @@ nlohmann::ordered_json emulation_json(const CycleEmulation& run, const Emulation
   for (const occam_port::LinkFigures& l : run.links)
     json["links"].push_back(
         {{"from", l.from}, {"to", l.to}, {"bytes", l.bytes}, {"busy_seconds", seconds(l.busy)}});
+  json["occam_style_factor"] = run.occam_style;
   json["memory_plan"] = plan_json(run.plan);
   json["memory_fault"] = memory_fault_json(run.memory_fault);
   json["found"] = run.result && run.result->found();

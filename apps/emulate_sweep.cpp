@@ -28,7 +28,7 @@ std::string csv_quoted(const std::string& text) {
 }
 
 imaging::LineChart chart_of(const std::vector<SweepPoint>& points, const EmulationSubject& subject,
-                            std::uint64_t shipped_external_kb) {
+                            const std::vector<imaging::LineChart::Mark>& marks) {
   imaging::LineChart chart;
   chart.title = fmt::format("one cycle on {}, {}", subject.platform, subject.pair);
   chart.x_label = "external memory per node, kb (log scale). x: the cycle does not fit";
@@ -40,9 +40,7 @@ imaging::LineChart chart_of(const std::vector<SweepPoint>& points, const Emulati
     else
       chart.points.push_back({kb, p.emulated_seconds});
   }
-  if (shipped_external_kb > 0)
-    chart.marks.push_back(
-        {static_cast<double>(shipped_external_kb), fmt::format("{} as shipped", subject.platform)});
+  chart.marks = marks;
   return chart;
 }
 
@@ -117,7 +115,7 @@ std::string sweep_csv(const std::vector<SweepPoint>& points) {
 std::map<std::string, fs::path> write_sweep(const fs::path& folder,
                                             const std::vector<SweepPoint>& points,
                                             const EmulationSubject& subject,
-                                            std::uint64_t shipped_external_kb) {
+                                            const std::vector<imaging::LineChart::Mark>& marks) {
   std::map<std::string, fs::path> written{{"sweep_csv", folder / "sweep.csv"},
                                           {"sweep_json", folder / "sweep.json"},
                                           {"sweep_png", folder / "sweep.png"}};
@@ -125,7 +123,7 @@ std::map<std::string, fs::path> write_sweep(const fs::path& folder,
     io::write_file_atomically(written["sweep_csv"], sweep_csv(points));
     io::write_file_atomically(written["sweep_json"], sweep_json(points, subject).dump(2) + '\n');
     imaging::write_image(written["sweep_png"],
-                         imaging::draw_line_chart(chart_of(points, subject, shipped_external_kb)));
+                         imaging::draw_line_chart(chart_of(points, subject, marks)));
   } catch (const std::exception& error) {
     throw CommandError(error.what());
   }

@@ -3,6 +3,7 @@
 
 #include "emulate_report.hpp"
 
+#include "marsokhod/imaging/pictures/line_chart.hpp"
 #include "marsokhod/occam_port/navigation/navigation_program.hpp"
 
 #include <nlohmann/json.hpp>
@@ -40,11 +41,10 @@ nlohmann::ordered_json sweep_json(const std::vector<SweepPoint>& points,
 std::string sweep_csv(const std::vector<SweepPoint>& points);
 
 /// Writes sweep.csv, sweep.json and sweep.png (the cycle's time against the memory, the sizes
-/// where it cannot run marked, the platform's own memory marked) into `folder`; returns their
-/// paths by key.
-std::map<std::string, std::filesystem::path> write_sweep(const std::filesystem::path& folder,
-                                                         const std::vector<SweepPoint>& points,
-                                                         const EmulationSubject& subject,
-                                                         std::uint64_t shipped_external_kb);
+/// where it cannot run marked, and `marks`, such as the platform's own memory) into `folder`;
+/// returns their paths by key.
+std::map<std::string, std::filesystem::path>
+write_sweep(const std::filesystem::path& folder, const std::vector<SweepPoint>& points,
+            const EmulationSubject& subject, const std::vector<imaging::LineChart::Mark>& marks);
 
 } // namespace marsokhod::apps

@@ -9,6 +9,7 @@ world_dir="$out/world-seed3"
 nav_dir="$out/nav-seed3"
 emulate_dir="$out/emulate-pc-card-seed3"
 onboard_dir="$out/emulate-onboard-seed3"
+reproduce_dir="$out/reproduce"
 
 "$marsokhod" world --seed 3 --size 256 --out "$world_dir"
 echo
@@ -21,7 +22,9 @@ echo
 "$marsokhod" emulate --platform onboard --seed 3 --size 128 --out "$onboard_dir" \
   --trace "$onboard_dir/trace.json"
 echo
-echo "make run: results are in $world_dir, $nav_dir, $emulate_dir and $onboard_dir"
+"$marsokhod" reproduce --out "$reproduce_dir"
+echo
+echo "make run: results are in $world_dir, $nav_dir, $emulate_dir, $onboard_dir and $reproduce_dir"
 echo "  $world_dir:"
 echo "    left.png / right.png              the rendered stereo pair"
 echo "    gt_disparity.png, gt_range.png    ground truth, false colour with a legend"
@@ -38,3 +41,6 @@ echo "    trace.json                        the cycle in Perfetto (ui.perfetto.d
 echo "  $onboard_dir:"
 echo "    the same again on the onboard computer's two 256 KB modules (terrain and zones"
 echo "    worked out again where the memory cannot keep them), with its trace.json"
+echo "  $reproduce_dir:"
+echo "    reproduce.md / .json / .png       the paper's 8 s, 10 s and 1.3 min beside the model's"
+echo "    sweep.png / .csv / .json          the onboard cycle against each module's memory"

@@ -283,6 +283,7 @@ PlatformSpec load_platform(const std::filesystem::path& file) {
   const detail::ProcessorSpec processor = read_processor(reader, file);
   platform.processor_type = processor.type;
   platform.link_speeds_mbps = processor.link_speeds_mbps;
+  platform.speed_grades = processor.speed_grades;
   platform.link_timing = processor.link_timing;
   const int default_speed = read_speed(reader, "link_speed_mbps", processor, std::nullopt);
   reader.reject_unknown_keys();

@@ -3,6 +3,7 @@
 #include "marsokhod/imaging/pictures/line_chart.hpp"
 
 #include "pictures/bitmap_font.hpp"
+#include "pictures/chart_drawing.hpp"
 #include "pictures/colour_scale.hpp"
 
 #include <fmt/format.h>
@@ -16,13 +17,7 @@
 namespace marsokhod::imaging {
 namespace {
 
-using Rgb = std::array<std::uint8_t, 3>;
-constexpr Rgb kInk{30, 30, 30};
-constexpr Rgb kGrid{225, 225, 225};
-constexpr Rgb kCurve{31, 119, 180};
-constexpr Rgb kMissing{214, 39, 40};
-constexpr Rgb kMark{120, 120, 120};
-constexpr int kTitleScale = 2; // the title's font pixels are 2 x 2, the rest 1 x 1
+using namespace detail; // the strokes
 
 // The plot area inside the margins, and the value ranges it shows.
 struct Frame {
@@ -40,38 +35,6 @@ struct Frame {
   }
   int py(double y) const { return bottom - static_cast<int>(std::lround(y / y1 * (bottom - top))); }
 };
-
-void dot(ImageView<std::uint8_t> rgb, int x, int y, Rgb colour) {
-  if (!rgb.contains(x, y))
-    return;
-  for (int c = 0; c < 3; ++c)
-    rgb(x, y, c) = colour[static_cast<std::size_t>(c)];
-}
-
-void square(ImageView<std::uint8_t> rgb, int x, int y, int half, Rgb colour) {
-  for (int dy = -half; dy <= half; ++dy)
-    for (int dx = -half; dx <= half; ++dx)
-      dot(rgb, x + dx, y + dy, colour);
-}
-
-// A line `thick` pixels wide; every `dash` pixels on, then as many off (0: solid).
-void line(ImageView<std::uint8_t> rgb, int x0, int y0, int x1, int y1, Rgb colour, int thick,
-          int dash = 0) {
-  const int steps = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
-  for (int i = 0; i <= steps; ++i) {
-    if (dash > 0 && (i / dash) % 2 == 1)
-      continue;
-    const double t = steps == 0 ? 0.0 : static_cast<double>(i) / steps;
-    const int x = x0 + static_cast<int>(std::lround(t * (x1 - x0)));
-    const int y = y0 + static_cast<int>(std::lround(t * (y1 - y0)));
-    square(rgb, x, y, thick / 2, colour);
-  }
-}
-
-void text(ImageView<std::uint8_t> rgb, int x, int y, const std::string& s, Rgb colour,
-          int scale = 1) {
-  detail::draw_text(rgb, x, y, s, scale, colour);
-}
 
 void check(const LineChart& chart) {
   const auto bad_x = [](double x) { return !std::isfinite(x) || x <= 0.0; };

@@ -50,6 +50,7 @@ struct CycleState {
   /// The memory plan the program was built to: whether the processes after range keep the
   /// terrain's four maps, and the zones' ground grid budget.
   const MemoryPlan* plan = nullptr;
+  double occam_style = 1.0; ///< CycleSetup::occam_style
   emulator::Kernel* kernel = nullptr;
   CycleChannels channels;
   /// Each node's link to the devices (frame store, host), if it has one.

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -209,6 +210,9 @@ void collect_figures(Network& net, const emulator::PlatformSpec& platform,
 
 CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetup& setup) {
   check_input(input);
+  if (!(setup.occam_style > 0.0) || !std::isfinite(setup.occam_style))
+    throw std::invalid_argument(
+        fmt::format("an occam style factor of {} is not a positive number", setup.occam_style));
   const emulator::PlatformSpec platform = what_if(*setup.platform, setup.external_bytes);
   const Placement& placement = *setup.placement;
   CycleEmulation out;
@@ -226,6 +230,7 @@ CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetu
   cycle.rig = input.rig;
   cycle.options = input.options;
   cycle.plan = &out.plan;
+  cycle.occam_style = setup.occam_style;
   detail::CycleAccounting accounting(setup.trace);
   Network net;
   cycle.kernel = &net.kernel;
@@ -242,6 +247,7 @@ CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetu
                                        emulator::to_string(run.reason),
                                        emulator::to_microseconds(net.kernel.now())));
   out.emulated = net.kernel.now();
+  out.occam_style = setup.occam_style;
   out.stages = std::move(cycle.stages);
   out.memory_fault = cycle.fault;
   out.work = cycle.work;

@@ -56,19 +56,24 @@ void acquire(ProcessContext& c) {
 
 void range(ProcessContext& c) {
   CycleState& s = c.cycle();
-  const std::string reason = receive_text(s.channels.disparity, c.memory());
-  const FloatImage seeable = receive_floats(c, s.channels.disparity, "seeable disparity");
-  c.start_stage();
-  const U8Image valid = receive_bytes(c, s.channels.disparity, "validity", s.width, s.height);
-  send_text(s.channels.terrain, reason);
-  make_and_send_terrain(c, seeable, s.channels.terrain);
-  send_image<std::uint8_t>(s.channels.terrain, valid.view());
+  {
+    const std::string reason = receive_text(s.channels.disparity, c.memory());
+    const FloatImage seeable = receive_floats(c, s.channels.disparity, "seeable disparity");
+    c.start_stage();
+    const U8Image valid = receive_bytes(c, s.channels.disparity, "validity", s.width, s.height);
+    await_hand_over(s.channels.disparity);
+    send_text(s.channels.terrain, reason);
+    make_and_send_terrain(c, seeable, s.channels.terrain);
+    send_image<std::uint8_t>(s.channels.terrain, valid.view());
+  }
+  close_hand_over(s.channels.terrain);
 }
 
 // The zones of the terrain; the validity they take goes before the hand-over to path.
 nav::ZoneMap zone_map(ProcessContext& c, const nav::TerrainRows& terrain) {
   CycleState& s = c.cycle();
   const U8Image valid = receive_bytes(c, s.channels.terrain, "validity", s.width, s.height);
+  await_hand_over(s.channels.terrain);
   const std::size_t grid_bytes = s.plan->zone_grid_bytes;
   c.doing(grid_bytes > 0 ? fmt::format("prohibited zones: a strip of the ground grid "
                                        "(at most {} B) and the zone map",
@@ -80,15 +85,18 @@ nav::ZoneMap zone_map(ProcessContext& c, const nav::TerrainRows& terrain) {
 
 void zones(ProcessContext& c) {
   CycleState& s = c.cycle();
-  const std::string reason = receive_text(s.channels.terrain, c.memory());
-  const NodeTerrain terrain(c, s.channels.terrain);
-  c.start_stage();
-  const nav::ZoneMap zones = zone_map(c, terrain.rows());
-  s.products.zones = zones;
-  send_text(s.channels.zones, reason);
-  terrain.send(s.channels.zones);
-  send_image<std::uint8_t>(s.channels.zones, zones.zone.view());
-  send_value(s.channels.zones, zones.counts);
+  {
+    const std::string reason = receive_text(s.channels.terrain, c.memory());
+    const NodeTerrain terrain(c, s.channels.terrain);
+    c.start_stage();
+    const nav::ZoneMap zones = zone_map(c, terrain.rows());
+    s.products.zones = zones;
+    send_text(s.channels.zones, reason);
+    terrain.send(s.channels.zones);
+    send_image<std::uint8_t>(s.channels.zones, zones.zone.view());
+    send_value(s.channels.zones, zones.counts);
+  }
+  close_hand_over(s.channels.zones);
 }
 
 void path(ProcessContext& c) {
@@ -99,6 +107,7 @@ void path(ProcessContext& c) {
   nav::ZoneMap zones{U8Image(c.memory()), {}};
   zones.zone = receive_bytes(c, s.channels.zones, "zone map", s.width, s.height);
   zones.counts = receive_value<decltype(zones.counts)>(s.channels.zones);
+  await_hand_over(s.channels.zones);
   c.doing("safest path: row sweep costs and steps");
   nav::PathPlan plan =
       nav::plan_cycle_path(terrain.rows(), zones, s.options.planner, c.meter(), c.memory());
@@ -183,6 +192,12 @@ void telemetry(ProcessContext& c) {
 }
 
 } // namespace
+
+void await_hand_over(BlockChannel& channel) {
+  if (receive_value<std::int32_t>(channel) != kHandOverClosed)
+    throw std::logic_error(
+        fmt::format("{}: a hand-over did not end where its receiver expected", channel.name()));
+}
 
 void run_process(ProcessContext& context) {
   static const std::map<std::string_view, void (*)(ProcessContext&)> bodies{

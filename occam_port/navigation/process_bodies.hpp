@@ -34,6 +34,20 @@ inline FloatImage receive_floats(ProcessContext& c, BlockChannel& channel, std::
   return receive_image<float>(channel, s.width, s.height, c.memory());
 }
 
+// A hand-over between two stages ends with a word the sender outputs once it has let go of what
+// it handed on. The second process to reach a channel is the one that goes on (the first is
+// only rescheduled), so without it a receiver could take its working buffers while the sender
+// still held its own: the memory plan's hand-over counts the two stages' handed and received
+// buffers, nothing more.
+inline constexpr std::int32_t kHandOverClosed = 0x484f4646; // "HOFF"
+
+inline void close_hand_over(BlockChannel& channel) {
+  send_value(channel, kHandOverClosed);
+}
+
+/// std::logic_error if the two ends disagree on the protocol.
+void await_hand_over(BlockChannel& channel);
+
 void features(ProcessContext& c);
 void matching(ProcessContext& c);
 void refine(ProcessContext& c);

@@ -18,8 +18,10 @@ BlockChannel* CycleChannels::named(std::string_view name) {
 // places data, which is external memory unless a what-if run says otherwise.
 ProcessContext::ProcessContext(CycleState& cycle, emulator::Node& node, std::string name)
     : cycle_(&cycle), node_(&node), name_(std::move(name)),
-      meter_(node, node.memory().default_placement() != emulator::Placement::on_chip),
-      recompute_meter_(node, node.memory().default_placement() != emulator::Placement::on_chip) {}
+      meter_(node, node.memory().default_placement() != emulator::Placement::on_chip,
+             cycle.occam_style),
+      recompute_meter_(node, node.memory().default_placement() != emulator::Placement::on_chip,
+                       cycle.occam_style) {}
 
 void ProcessContext::start_stage() {
   if (!started_)

@@ -201,10 +201,13 @@ Refined refined_stereo(ProcessContext& c) {
 
 void refine(ProcessContext& c) {
   CycleState& s = c.cycle();
-  const Refined refined = refined_stereo(c);
-  send_text(s.channels.disparity, refined.reason);
-  send_image<float>(s.channels.disparity, refined.seeable.view());
-  send_image<std::uint8_t>(s.channels.disparity, refined.valid.view());
+  {
+    const Refined refined = refined_stereo(c);
+    send_text(s.channels.disparity, refined.reason);
+    send_image<float>(s.channels.disparity, refined.seeable.view());
+    send_image<std::uint8_t>(s.channels.disparity, refined.valid.view());
+  }
+  close_hand_over(s.channels.disparity);
 }
 
 } // namespace marsokhod::occam_port::detail

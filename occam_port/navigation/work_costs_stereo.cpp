@@ -32,7 +32,7 @@ SEQ x = 0 FOR W
         "ldl 0; ldl 5; bsub; lb*; stl 3                                 -- d := INT dl[x]\n"
         "ldl 0; ldl 3; sub; stl 4                                       -- r := x - d\n"
         "ldc 0; ldl 4; gt; cj_taken 10                                  -- r < 0: no\n"
-        "ldl 4; ldc 128; csub0; ldl 6; bsub; lb*; ldl 3; sub; ldl 7; gt; cj_taken 6\n"
+        "ldl 4; ldc 128; csub0; ldl 6; bsub; lb*; ldl 3; sub; ldl 7; gt; eqc 0; cj_not_taken 13\n"
         "ldl 3; ldl 4; ldc 128; csub0; ldl 6; bsub; lb*; sub; ldl 7; gt; cj_taken 10\n"
         "ldc 255; ldl 0; ldl 8; bsub; sb*                               -- ok[x] := 255\n"
         "ldlp 0; ldc 90; lend_loop",
@@ -54,7 +54,7 @@ SEQ i = start FOR n       -- one pass of this loop per pixel written
         "ldl 3; adc 1; stl 3; j 60                                      -- n := n + 1\n"
         "ldlp 0; ldc 70; lend_loop                                      -- the scan's loop\n"
         "ldl 4; ldl 0; ldc 128; csub0; ldl 6; wsub; stnl* 0             -- d.row[i] := v\n"
-        "ldlp 0; ldc 20; lend_loop                                      -- the fill's loop",
+        "ldlp 0; ldc 13; lend_loop                                      -- the fill's loop",
         "[I] from OCCAM_COSTS.md section 1 (ba[i] 10 cycles, M3; IF, loop 13-14); a REAL32 "
         "copy is a word move with ldnl/stnl, as an occam-probe trace shows [X]. A written "
         "pixel passes through two loops, the scan and the fill, so its unit holds two loop "

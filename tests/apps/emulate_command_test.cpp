@@ -22,12 +22,7 @@ using marsokhod::testing::run_marsokhod;
 using marsokhod::testing::slurp;
 
 fs::path fresh_folder(const std::string& name) {
-  // One root per test process: ctest runs this file's tests side by side.
-  const fs::path dir =
-      fs::temp_directory_path() / ("marsokhod-emulate-tests-" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return marsokhod::testing::fresh_folder("marsokhod-emulate-tests", name);
 }
 
 const fs::path kStereo = fs::path(MARSOKHOD_SHARED_DATA) / "stereo";
@@ -210,11 +205,11 @@ TEST(EmulateCommand, TraceHasATrackPerCpuStageAndLinkDirection) {
 
 TEST(EmulateCommand, SweepRunsOneCyclePerMemorySizeAndWritesItsTableAndPicture) {
   const fs::path out = fresh_folder("sweep");
-  const Outcome sweep =
-      emulate("--platform onboard --seed 1 --sweep-external-kb 32,256,1024 --out " + quoted(out));
+  const Outcome sweep = emulate(
+      "--platform onboard --seed 1 --sweep-external-kb 32,256,1024,640 --out " + quoted(out));
   ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
   const nlohmann::json& points = sweep.summary["sweep"];
-  ASSERT_EQ(points.size(), 3U);
+  ASSERT_EQ(points.size(), 4U);
   EXPECT_EQ(points[0]["external_kb"], 32);
   // 32 KB cannot hold the first image: no time, the fault named.
   EXPECT_TRUE(points[0]["emulated_seconds"].is_null());
@@ -231,12 +226,37 @@ TEST(EmulateCommand, SweepRunsOneCyclePerMemorySizeAndWritesItsTableAndPicture) 
             points[1]["emulated_seconds"].get<double>());
   EXPECT_LT(points[2]["recomputed_units"].get<std::uint64_t>(),
             points[1]["recomputed_units"].get<std::uint64_t>());
+  // 640 KB keeps the maps too: the zones let go of theirs before the path takes its row
+  // sweep's buffers (each hand-over is closed by its sender), so the plan's fit holds.
+  EXPECT_TRUE(points[3]["memory_fault"].is_null()) << points[3]["memory_fault"];
+  EXPECT_TRUE(points[3]["terrain_kept"].get<bool>());
+  EXPECT_GE(points[3]["emulated_seconds"].get<double>(),
+            points[2]["emulated_seconds"].get<double>());
+  EXPECT_LT(points[3]["emulated_seconds"].get<double>(),
+            points[1]["emulated_seconds"].get<double>());
   // The files: the JSON printed, a CSV line per size, a PNG picture.
   EXPECT_EQ(nlohmann::json::parse(slurp(out / "sweep.json"))["sweep"], points);
   const std::string csv = slurp(out / "sweep.csv");
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
   EXPECT_EQ(csv.rfind("external_kb,emulated_seconds,memory_fault", 0), 0U);
   EXPECT_EQ(slurp(out / "sweep.png").substr(1, 3), "PNG");
+}
+
+// The fitted style factor is the default and is reported; the table's own style (1) charges
+// every unit of work its table cycles, so the cycle is shorter, by at most the factor.
+TEST(EmulateCommand, RunsAtTheFittedOccamStyleUnlessToldAnother) {
+  const Outcome fitted = emulate("--platform pc-card --seed 2 --out " + quoted(fresh_folder("f")));
+  const Outcome table =
+      emulate("--platform pc-card --seed 2 --occam-style 1 --out " + quoted(fresh_folder("t")));
+  ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  const double factor = fitted.summary["occam_style_factor"];
+  EXPECT_GT(factor, 1.0);
+  EXPECT_EQ(table.summary["occam_style_factor"], 1.0);
+  const double ratio = fitted.summary["emulated_seconds"].get<double>() /
+                       table.summary["emulated_seconds"].get<double>();
+  EXPECT_GT(ratio, 1.0 + 0.9 * (factor - 1.0));
+  EXPECT_LE(ratio, factor);
 }
 
 TEST(EmulateCommand, RefusesWhatItCannotRun) {
@@ -261,6 +281,8 @@ TEST(EmulateCommand, RefusesWhatItCannotRun) {
        "neither --external-kb nor --trace"},
       {"--platform onboard --sweep-external-kb 64 --external-kb 64 --out " + quoted(out), 2,
        "neither --external-kb nor --trace"},
+      {"--platform pc-card --occam-style 0 --out " + quoted(out), 2, "--occam-style"},
+      {"--platform pc-card --occam-style fast --out " + quoted(out), 2, "--occam-style"},
   };
   for (const auto& c : cases) {
     const auto result = run_marsokhod("emulate " + c.arguments);

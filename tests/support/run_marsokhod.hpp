@@ -27,6 +27,16 @@ inline std::string quoted(const std::filesystem::path& path) {
   return text;
 }
 
+/// An empty folder `name` under a root of the test file's own (`suite`) and this process:
+/// ctest runs a file's tests side by side, each in its own process.
+inline std::filesystem::path fresh_folder(const std::string& suite, const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / (suite + "-" + std::to_string(::getpid())) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 /// The whole file's bytes (empty when it cannot be read).
 inline std::string slurp(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

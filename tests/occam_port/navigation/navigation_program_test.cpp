@@ -9,6 +9,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <random>
 
 namespace marsokhod::occam_port {
@@ -72,8 +73,8 @@ Compared on_the_card(const SyntheticPair& pair) {
   Compared compared;
   compared.native = nav::navigate(pair.left, pair.right, pair.rig, options, compared.native_work);
   const CycleInput input{pair.left, pair.right, &pair.rig, options};
-  compared.run =
-      emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr});
+  compared.run = emulate_navigation_cycle(
+      input, CycleSetup{&card, &placement, std::nullopt, nullptr, kOccamStyleFactor});
   return compared;
 }
 
@@ -106,6 +107,34 @@ TEST(NavigationProgram, GivesTheNativeCycleResultAndReportsTheSameWork) {
   }
 }
 
+// The style factor multiplies the cycles of every unit of work and nothing else: the work
+// itself, the links and the channels stay as they are.
+TEST(NavigationProgram, TheOccamStyleScalesTheWorksCpuTimeAndNotTheWork) {
+  const SyntheticPair pair(5);
+  const emulator::PlatformSpec card = emulator::load_platform(kPlatforms / "pc-card.toml");
+  const Placement placement = everything_on("card", card.name);
+  const CycleInput input{pair.left, pair.right, &pair.rig, nav::NavigationOptions{}};
+  const CycleEmulation once =
+      emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr, 1.0});
+  const CycleEmulation twice =
+      emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr, 2.0});
+  for (std::size_t k = 0; k < nav::kWorkKinds; ++k)
+    EXPECT_EQ(once.work.count(static_cast<nav::Work>(k)),
+              twice.work.count(static_cast<nav::Work>(k)));
+  for (std::size_t i = 0; i < once.processes.size(); ++i) {
+    if (once.processes[i].name != "matching" && once.processes[i].name != "zones")
+      continue;
+    const double ratio =
+        static_cast<double>(twice.processes[i].cpu) / static_cast<double>(once.processes[i].cpu);
+    EXPECT_GT(ratio, 1.98) << once.processes[i].name;
+    EXPECT_LE(ratio, 2.0) << once.processes[i].name;
+  }
+  for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()})
+    EXPECT_THROW(
+        emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr, bad}),
+        std::invalid_argument);
+}
+
 TEST(NavigationProgram, WhereTheTerrainMapsDoNotFitTheirRowsAreWorkedOutAgainAndReportedApart) {
   // At 256 x 256 the card's 2 MB cannot keep the four terrain maps beside the zones and the
   // path: the plan keeps the disparity, and the zones and the path work the rows out again.
@@ -135,7 +164,7 @@ TEST(NavigationProgram, AMemoryFaultEndsTheRunWithTheNodeProcessAndBuffer) {
   const Placement placement = everything_on("card", card.name);
   const SyntheticPair pair(3);
   const CycleInput input{pair.left, pair.right, &pair.rig, {}};
-  CycleSetup setup{&card, &placement, std::nullopt, nullptr};
+  CycleSetup setup{&card, &placement, std::nullopt, nullptr, kOccamStyleFactor};
   setup.external_bytes = 64 * 1024;
   const CycleEmulation run = emulate_navigation_cycle(input, setup);
   ASSERT_TRUE(run.memory_fault);

@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -107,6 +109,8 @@ struct PlatformSpec {
   std::string source; ///< the file it was read from
   std::string processor_type;
   std::vector<int> link_speeds_mbps;
+  /// The processor's cycle time by speed grade ("T805-30" -> 33'333 ps), for what-if runs.
+  std::map<std::string, Tick, std::less<>> speed_grades;
   LinkTimingSpec link_timing;
   std::vector<NodeSpec> nodes;
   std::vector<DeviceSpec> devices;

@@ -20,7 +20,9 @@ namespace marsokhod::occam_port {
 /// per kind, so that the work done inside the emulation can be compared with a native run's.
 class EmulatedMeter final : public nav::DynamicMeter {
 public:
-  EmulatedMeter(emulator::Node& node, bool buffers_external);
+  /// `occam_style`: the cycles of the program's occam per unit over the cost table's
+  /// (work_costs.hpp, kOccamStyleFactor).
+  EmulatedMeter(emulator::Node& node, bool buffers_external, double occam_style);
 
   void operator()(nav::Work kind, std::uint64_t count) override;
 

@@ -10,6 +10,7 @@
 #include "marsokhod/nav/work/work.hpp"
 #include "marsokhod/occam_port/navigation/memory_plan.hpp"
 #include "marsokhod/occam_port/navigation/placement.hpp"
+#include "marsokhod/occam_port/navigation/work_costs.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +41,8 @@ struct CycleSetup {
   std::optional<std::size_t> external_bytes;
   /// Receives the run's trace when set.
   emulator::TraceSink* trace = nullptr;
+  /// The cycles of the program's occam over the cost table's (kOccamStyleFactor, fitted).
+  double occam_style = kOccamStyleFactor;
 };
 
 /// One stage of the cycle: from the moment its process had its input to the moment it had
@@ -89,6 +92,7 @@ struct MemoryFaultFigures {
 struct CycleEmulation {
   /// From the cycle's start to the last process's end (or to the fault).
   emulator::Tick emulated = 0;
+  double occam_style = 0.0; ///< CycleSetup::occam_style, as run
   std::vector<StageFigures> stages;
   std::vector<ProcessFigures> processes;
   std::vector<NodeFigures> nodes;

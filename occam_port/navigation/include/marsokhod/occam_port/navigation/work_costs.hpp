@@ -34,6 +34,14 @@ struct WorkCost {
   std::string_view source; ///< where the figures come from (OCCAM_COSTS.md row, [X]/[I])
 };
 
+/// The timing model's one fitted constant: the cycles a unit of work took in the 1995
+/// navigation's occam over the table's, whose listings are careful occam (row abbreviations,
+/// running sums, range checks on). The kit's measurements bracket it: the same 3x3 window
+/// costs 0.85 times as much with range checks off and 2.05 times with naive 2-D indexing
+/// (docs/timing.md). Fitted on the paper's "stereo reconstruction of 128x128 in 8 s on one
+/// transputer module" by `marsokhod reproduce`, which fits it again and reports both.
+inline constexpr double kOccamStyleFactor = 1.266;
+
 /// Every kind's entry, in nav::Work order (count_ has none).
 std::span<const WorkCost> work_costs();
 
