@@ -73,7 +73,7 @@ Reproduction reproduce(const ReproduceCli& cli) {
                {"whole cycle onboard", "versus 1.3 min in onboard processing",
                 kPaperOnboardCycleSeconds, f.onboard_cycle, false}};
   note(cli, "sensitivity to the parameters the paper does not give...");
-  r.sensitivity = sensitivity(model, style);
+  r.sensitivity = sensitivity(model, style, f);
   r.sweep = model.onboard_sweep(cli.sweep_kb, style, [&](std::size_t done) {
     note(cli, fmt::format("sweep {}/{}: {} KB", done, cli.sweep_kb.size(), cli.sweep_kb[done - 1]));
   });

@@ -230,9 +230,14 @@ std::vector<Variant> variants() {
 
 } // namespace
 
-std::vector<SensitivityRow> sensitivity(const TimingModel& model, double occam_style) {
+std::vector<SensitivityRow> sensitivity(const TimingModel& model, double occam_style,
+                                        const ModelFigures& shipped) {
   std::vector<SensitivityRow> rows;
   for (const Variant& v : variants()) {
+    if (v.shipped) {
+      rows.push_back({v.parameter, v.value, true, shipped});
+      continue;
+    }
     emu::PlatformSpec card = model.card();
     emu::PlatformSpec onboard = model.onboard();
     v.change(card, onboard);

@@ -85,7 +85,9 @@ struct SensitivityRow {
 };
 
 /// The three figures as each unsourced-by-the-paper parameter moves over its period range,
-/// the others as shipped and the fitted constant held.
-std::vector<SensitivityRow> sensitivity(const TimingModel& model, double occam_style);
+/// the others as shipped and the fitted constant held; `shipped` is the model's figures as
+/// shipped at that constant, given to every shipped value's row rather than run again.
+std::vector<SensitivityRow> sensitivity(const TimingModel& model, double occam_style,
+                                        const ModelFigures& shipped);
 
 } // namespace marsokhod::apps
