@@ -164,7 +164,8 @@ int run_emulate(const EmulateCli& cli) {
 
   occam_port::CycleInput input{pair.left, pair.right, pair.rig.get(), {}};
   input.options.attitude = pair.attitude;
-  occam_port::CycleSetup setup{&platform, &placement, std::nullopt, nullptr, cli.occam_style};
+  occam_port::CycleSetup setup{&platform,       &placement, std::nullopt, nullptr,
+                               cli.occam_style, nullptr,    std::nullopt};
   if (!cli.sweep_kb.empty())
     return run_sweep(cli, platform, input, setup,
                      EmulationSubject{platform.name, platform.source, placement_file.string(),

@@ -14,6 +14,7 @@
 #include "marsokhod/occam_port/navigation/work_costs.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <map>
@@ -135,7 +136,9 @@ Command make_reproduce_command(CLI::App& parent) {
   app->add_option("--seeds", cli->seeds, "World seeds A..B of the scenes the figures average")
       ->capture_default_str();
   app->add_option("--sweep-external-kb", cli->sweep_kb,
-                  "External memory sizes of the onboard sweep, KB, comma-separated")
+                  fmt::format("External memory sizes of the onboard sweep, KB, comma-separated "
+                              "(default {})",
+                              fmt::join(cli->sweep_kb, ",")))
       ->delimiter(',')
       ->transform(integer_between<std::uint64_t>(1, 4194300));
   app->add_option("--out", cli->out, "Output folder (created if missing)")->capture_default_str();

@@ -43,8 +43,9 @@ op::CycleEmulation run_cycle(const ReproductionScene& scene, const emu::Platform
                              std::optional<std::size_t> external_bytes = std::nullopt) {
   op::CycleInput input{scene.left, scene.right, scene.rig.get(), {}};
   input.options.attitude = scene.attitude;
-  return op::emulate_navigation_cycle(
-      input, op::CycleSetup{&platform, &placement, external_bytes, nullptr, occam_style});
+  return op::emulate_navigation_cycle(input,
+                                      op::CycleSetup{&platform, &placement, external_bytes, nullptr,
+                                                     occam_style, nullptr, std::nullopt});
 }
 
 // A figure the paper gives must come out of a cycle that ran to its end.

@@ -61,7 +61,7 @@ occam_port::CycleEmulation emulate(const Machine& m) {
   const occam_port::CycleInput input{s.frame.images.left, s.frame.images.right, &s.rig, options()};
   occam_port::CycleEmulation run = occam_port::emulate_navigation_cycle(
       input, occam_port::CycleSetup{&m.platform, &m.placement, m.external_bytes, nullptr,
-                                    occam_port::kOccamStyleFactor});
+                                    occam_port::kOccamStyleFactor, nullptr, std::nullopt});
   if (run.memory_fault)
     throw std::runtime_error("the benchmark cycle ran out of memory on " + run.memory_fault->node);
   return run;

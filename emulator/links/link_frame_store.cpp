@@ -40,6 +40,12 @@ void FrameStore::answer(Server& server) {
     server.port->start_input(server.length, [this, &server] { receive_upload(server); });
     return;
   }
+  if (server.request == kHeartbeat) {
+    if (heartbeat_sink_)
+      heartbeat_sink_(server.link);
+    listen(server);
+    return;
+  }
   const int camera = std::to_integer<int>(server.request);
   if (camera >= device_.cameras) {
     listen(server);
@@ -51,6 +57,18 @@ void FrameStore::answer(Server& server) {
                                        device_.name, camera, server.image.size(), image_bytes()));
   ++served_;
   server.port->start_output(server.image, [this, &server] { listen(server); });
+}
+
+void FrameStore::reset_link(int link) {
+  for (const auto& server : servers_) {
+    if (server->link != link)
+      continue;
+    Link& wire = server->port->link();
+    wire.set_powered(server->port->end(), false);
+    wire.set_powered(server->port->end(), true);
+    server->image.clear();
+    listen(*server);
+  }
 }
 
 void FrameStore::receive_upload(Server& server) {

@@ -124,10 +124,23 @@ void Node::power_off() {
       a.link->set_powered(a.end, false);
 }
 
+void Node::hang() {
+  if (!powered_ || hung_)
+    return;
+  hung_ = true;
+  if (TraceSink* sink = kernel_->trace())
+    sink->instant(events_track_, kernel_->now(), "hang", spec_.name);
+  kernel_->kill_all(*cpu_);
+  for (const Attachment& a : links_)
+    if (a.link != nullptr)
+      a.link->set_powered(a.end, false);
+}
+
 void Node::power_on() {
   if (powered_)
     return;
   powered_ = true;
+  hung_ = false;
   if (TraceSink* sink = kernel_->trace())
     sink->instant(events_track_, kernel_->now(), "power on", spec_.name);
   for (const Attachment& a : links_)

@@ -2,6 +2,7 @@
 
 #include "marsokhod/emulator/platform/platform.hpp"
 
+#include "platform/platform_overswitch.hpp"
 #include "platform/platform_processor.hpp"
 #include "platform/platform_table_reader.hpp"
 
@@ -269,6 +270,18 @@ const WireSpec* PlatformSpec::wire_at(const LinkEndpoint& endpoint) const {
   return it == wires.end() ? nullptr : &*it;
 }
 
+const WireSpec* PlatformSpec::wire_between(const std::string& x, const std::string& y) const {
+  const WireSpec* found = nullptr;
+  for (const WireSpec& wire : wires) {
+    const bool joins =
+        !wire.a.device && !wire.b.device &&
+        ((wire.a.owner == x && wire.b.owner == y) || (wire.a.owner == y && wire.b.owner == x));
+    if (joins && (found == nullptr || found->broken))
+      found = &wire;
+  }
+  return found;
+}
+
 PlatformSpec load_platform(const std::filesystem::path& file) {
   PlatformSpec platform;
   platform.source = file.string();
@@ -307,6 +320,10 @@ PlatformSpec load_platform(const std::filesystem::path& file) {
                    TableReader wire(table, platform.source, "a [[wire]]");
                    platform.wires.push_back(wires.read(wire, default_speed));
                  });
+  if (const toml::table* table = top.optional_table("overswitch")) {
+    TableReader overswitch(*table, platform.source, "[overswitch]");
+    platform.overswitch = detail::read_overswitch(overswitch, platform);
+  }
   top.reject_unknown_keys();
   return platform;
 }

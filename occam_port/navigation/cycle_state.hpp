@@ -21,7 +21,12 @@
 
 namespace marsokhod::emulator {
 class LinkPort;
+class SharedOutput;
 } // namespace marsokhod::emulator
+
+namespace marsokhod::occam_port {
+class CycleSupervisor;
+} // namespace marsokhod::occam_port
 
 namespace marsokhod::occam_port::detail {
 
@@ -53,8 +58,15 @@ struct CycleState {
   double occam_style = 1.0; ///< CycleSetup::occam_style
   emulator::Kernel* kernel = nullptr;
   CycleChannels channels;
-  /// Each node's link to the devices (frame store, host), if it has one.
-  std::map<std::string, emulator::LinkPort*> device_ports;
+  /// Each node's link to the devices (frame store, host), if it has one; its output is shared
+  /// with the heartbeat.
+  std::map<std::string, emulator::SharedOutput*> device_outputs;
+  /// Told of each stage's start, when the cycle is supervised.
+  CycleSupervisor* supervisor = nullptr;
+  /// The program's processes of this run that have not ended, in the order they started.
+  std::vector<emulator::Process*> live;
+  /// A process of this run was killed (its node hung or lost power): the run cannot finish.
+  bool killed = false;
 
   // The host's side.
   nav::NavigationResult products;
@@ -63,7 +75,6 @@ struct CycleState {
   std::vector<StageFigures> stages;
   std::optional<MemoryFaultFigures> fault;
   std::optional<std::string> error;
-  std::vector<std::vector<std::byte>> telemetry;
 };
 
 /// One running process: its node, its meter, and what it is allocating (for fault messages).
@@ -88,8 +99,10 @@ public:
   /// The stage starts (its input has arrived) / ends.
   void start_stage();
   void end_stage();
-  /// The node's link to the devices; std::logic_error without one (the placement checks it).
+  /// The node's link to the devices and its shared output; std::logic_error without one (the
+  /// placement checks it).
   emulator::LinkPort& device_port();
+  emulator::SharedOutput& device_output();
 
 private:
   CycleState* cycle_;

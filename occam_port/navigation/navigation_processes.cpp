@@ -5,6 +5,7 @@
 
 #include "marsokhod/emulator/links/link.hpp"
 #include "marsokhod/emulator/links/link_frame_store.hpp"
+#include "marsokhod/emulator/links/shared_output.hpp"
 #include "marsokhod/nav/cycle/motion_scheme.hpp"
 
 #include <fmt/format.h>
@@ -25,15 +26,15 @@ struct PlanHeader {
   double score = 0.0;
 };
 
+// Header and payload in one turn at the shared device output, so that no heartbeat byte
+// comes between them.
 void upload(ProcessContext& c, std::span<const std::byte> payload) {
-  emulator::LinkPort& port = c.device_port();
   std::array<std::byte, 5> header{emulator::FrameStore::kUploadRequest};
   for (std::size_t i = 0; i < 4; ++i)
     header[1 + i] = std::byte(static_cast<unsigned char>(payload.size() >> (8 * i)));
-  c.node().execute(emulator::Instruction::out);
-  port.output(header);
-  c.node().execute(emulator::Instruction::out);
-  port.output(payload);
+  emulator::Node& node = c.node();
+  c.device_output().output({header, payload},
+                           [&node] { node.execute(emulator::Instruction::out); });
 }
 
 // ---- the processes ----
@@ -47,7 +48,7 @@ void acquire(ProcessContext& c) {
     U8Image image(s.width, s.height, 1, 0, c.memory());
     const std::byte request{static_cast<unsigned char>(camera)};
     c.node().execute(emulator::Instruction::out);
-    port.output(std::span(&request, 1));
+    c.device_output().output(std::span(&request, 1));
     c.node().execute(emulator::Instruction::in);
     port.input(std::as_writable_bytes(std::span(image.data(), image.size())));
     send_image<std::uint8_t>(s.channels.images, image.view());

@@ -17,12 +17,6 @@ void check_shape(const ProgramShape& shape);
 void check_program_fits(const Placement& placement, int header_line,
                         const emulator::PlatformSpec& platform, const ProgramShape& shape);
 
-/// A wire directly joining nodes `x` and `y`, either way round; a sound one if there is one,
-/// else a broken one (so that a message can say the cable is broken, not missing); nullptr if
-/// none joins them.
-const emulator::WireSpec* wire_between(const emulator::PlatformSpec& platform, const std::string& x,
-                                       const std::string& y);
-
 /// An unbroken wire from `node` to a powered device that serves the program: a frame store
 /// (images) or a host (images and telemetry on the PC card); nullptr if there is none.
 const emulator::WireSpec* device_wire(const emulator::PlatformSpec& platform,

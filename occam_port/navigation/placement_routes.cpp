@@ -15,19 +15,6 @@ namespace marsokhod::occam_port::detail {
 using emulator::PlatformSpec;
 using emulator::WireSpec;
 
-const WireSpec* wire_between(const PlatformSpec& platform, const std::string& x,
-                             const std::string& y) {
-  const WireSpec* found = nullptr;
-  for (const WireSpec& wire : platform.wires) {
-    const bool joins =
-        !wire.a.device && !wire.b.device &&
-        ((wire.a.owner == x && wire.b.owner == y) || (wire.a.owner == y && wire.b.owner == x));
-    if (joins && (found == nullptr || found->broken))
-      found = &wire;
-  }
-  return found;
-}
-
 const WireSpec* device_wire(const PlatformSpec& platform, const std::string& node) {
   for (const WireSpec& wire : platform.wires) {
     if (wire.broken)
@@ -90,7 +77,7 @@ void check_program_fits(const Placement& placement, int header_line, const Platf
     const ProcessPlace& b = placement.places[to];
     if (a.node == b.node)
       continue;
-    const WireSpec* wire = wire_between(platform, a.node, b.node);
+    const WireSpec* wire = platform.wire_between(a.node, b.node);
     if (wire != nullptr && !wire->broken) {
       const auto [taken, added] = directions.emplace(std::pair{a.node, b.node}, &channel);
       if (added)

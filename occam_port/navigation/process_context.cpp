@@ -2,6 +2,9 @@
 
 #include "navigation/cycle_state.hpp"
 
+#include "marsokhod/emulator/links/shared_output.hpp"
+#include "marsokhod/occam_port/navigation/cycle_supervisor.hpp"
+
 #include <stdexcept>
 
 namespace marsokhod::occam_port::detail {
@@ -24,8 +27,11 @@ ProcessContext::ProcessContext(CycleState& cycle, emulator::Node& node, std::str
                        cycle.occam_style) {}
 
 void ProcessContext::start_stage() {
-  if (!started_)
-    started_ = node_->kernel().now();
+  if (started_)
+    return;
+  started_ = node_->kernel().now();
+  if (cycle_->supervisor != nullptr)
+    cycle_->supervisor->stage_started(name_, *started_);
 }
 
 // A track per stage, so that overlapping stages of one node never have to nest.
@@ -41,8 +47,12 @@ void ProcessContext::end_stage() {
 }
 
 emulator::LinkPort& ProcessContext::device_port() {
-  const auto found = cycle_->device_ports.find(node_->name());
-  if (found == cycle_->device_ports.end() || found->second == nullptr)
+  return device_output().port();
+}
+
+emulator::SharedOutput& ProcessContext::device_output() {
+  const auto found = cycle_->device_outputs.find(node_->name());
+  if (found == cycle_->device_outputs.end() || found->second == nullptr)
     throw std::logic_error("process " + name_ + ": node " + node_->name() +
                            " has no link to a device");
   return *found->second;

@@ -73,8 +73,9 @@ Compared on_the_card(const SyntheticPair& pair) {
   Compared compared;
   compared.native = nav::navigate(pair.left, pair.right, pair.rig, options, compared.native_work);
   const CycleInput input{pair.left, pair.right, &pair.rig, options};
-  compared.run = emulate_navigation_cycle(
-      input, CycleSetup{&card, &placement, std::nullopt, nullptr, kOccamStyleFactor});
+  compared.run =
+      emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr,
+                                                 kOccamStyleFactor, nullptr, std::nullopt});
   return compared;
 }
 
@@ -114,10 +115,10 @@ TEST(NavigationProgram, TheOccamStyleScalesTheWorksCpuTimeAndNotTheWork) {
   const emulator::PlatformSpec card = emulator::load_platform(kPlatforms / "pc-card.toml");
   const Placement placement = everything_on("card", card.name);
   const CycleInput input{pair.left, pair.right, &pair.rig, nav::NavigationOptions{}};
-  const CycleEmulation once =
-      emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr, 1.0});
-  const CycleEmulation twice =
-      emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr, 2.0});
+  const CycleEmulation once = emulate_navigation_cycle(
+      input, CycleSetup{&card, &placement, std::nullopt, nullptr, 1.0, nullptr, std::nullopt});
+  const CycleEmulation twice = emulate_navigation_cycle(
+      input, CycleSetup{&card, &placement, std::nullopt, nullptr, 2.0, nullptr, std::nullopt});
   for (std::size_t k = 0; k < nav::kWorkKinds; ++k)
     EXPECT_EQ(once.work.count(static_cast<nav::Work>(k)),
               twice.work.count(static_cast<nav::Work>(k)));
@@ -130,9 +131,9 @@ TEST(NavigationProgram, TheOccamStyleScalesTheWorksCpuTimeAndNotTheWork) {
     EXPECT_LE(ratio, 2.0) << once.processes[i].name;
   }
   for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()})
-    EXPECT_THROW(
-        emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr, bad}),
-        std::invalid_argument);
+    EXPECT_THROW(emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt,
+                                                            nullptr, bad, nullptr, std::nullopt}),
+                 std::invalid_argument);
 }
 
 TEST(NavigationProgram, WhereTheTerrainMapsDoNotFitTheirRowsAreWorkedOutAgainAndReportedApart) {
@@ -164,7 +165,8 @@ TEST(NavigationProgram, AMemoryFaultEndsTheRunWithTheNodeProcessAndBuffer) {
   const Placement placement = everything_on("card", card.name);
   const SyntheticPair pair(3);
   const CycleInput input{pair.left, pair.right, &pair.rig, {}};
-  CycleSetup setup{&card, &placement, std::nullopt, nullptr, kOccamStyleFactor};
+  CycleSetup setup{&card,   &placement,  std::nullopt, nullptr, kOccamStyleFactor,
+                   nullptr, std::nullopt};
   setup.external_bytes = 64 * 1024;
   const CycleEmulation run = emulate_navigation_cycle(input, setup);
   ASSERT_TRUE(run.memory_fault);

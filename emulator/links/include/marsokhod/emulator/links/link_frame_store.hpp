@@ -18,8 +18,10 @@ namespace marsokhod::emulator {
 /// (little-endian) for 16. The request kUploadRequest instead announces an upload: a four-byte
 /// little-endian length, then that many bytes, handed to the upload sink (telemetry, the wheel
 /// commands' log); an upload longer than kMaxUploadBytes is refused and the link ignored from
-/// then on. A request for a camera it does not have gets no answer. It runs on the link engines
-/// alone (no process), so it never shows in a deadlock report.
+/// then on. The request kHeartbeat is a module's heartbeat for the overswitch that sits on
+/// the device links: it is handed to the heartbeat sink and gets no answer. A request for a camera
+/// it does not have gets no answer. It runs on the link engines alone (no process), so it never
+/// shows in a deadlock report.
 class FrameStore {
 public:
   /// The image a camera holds now; must return exactly image_bytes() bytes.
@@ -27,7 +29,11 @@ public:
   /// Receives each upload with the device link it came in on.
   using UploadSink = std::function<void(int link, std::vector<std::byte> bytes)>;
 
+  /// Receives each heartbeat with the device link it came in on.
+  using HeartbeatSink = std::function<void(int link)>;
+
   static constexpr std::byte kUploadRequest{0xFF};
+  static constexpr std::byte kHeartbeat{0xFE};
   static constexpr std::size_t kMaxUploadBytes = std::size_t{16} << 20;
 
   FrameStore(LinkNetwork& network, const DeviceSpec& device, ImageSource source,
@@ -36,6 +42,11 @@ public:
   FrameStore& operator=(const FrameStore&) = delete;
 
   std::size_t image_bytes() const;
+  void set_heartbeat_sink(HeartbeatSink sink) { heartbeat_sink_ = std::move(sink); }
+  /// Resets the device's end of `link` (its engines forget what they were doing) and listens
+  /// for a request again: what the overswitch does to a module's device link when it restarts
+  /// the program, so that a message cut short does not run into the next.
+  void reset_link(int link);
   std::size_t requests_served() const { return served_; }
   std::size_t uploads_received() const { return uploads_; }
 
@@ -54,6 +65,7 @@ private:
   DeviceSpec device_;
   ImageSource source_;
   UploadSink uploads_sink_;
+  HeartbeatSink heartbeat_sink_;
   std::size_t uploads_ = 0;
   std::vector<std::unique_ptr<Server>> servers_;
   std::size_t served_ = 0;

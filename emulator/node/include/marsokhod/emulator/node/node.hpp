@@ -85,11 +85,18 @@ public:
 
   // --- power ------------------------------------------------------------------------------
   bool powered() const { return powered_; }
+  /// Powered, and neither hung nor off: its processes run and its links answer.
+  bool running() const { return powered_ && !hung_; }
   /// Kills every process (their destructors run) and stops the link engines. Not from a
   /// process of this node.
   void power_off();
-  /// Restarts the link engines; processes must be started again (as after a reset).
+  /// Restarts the link engines; processes must be started again (as after a reset). Clears a
+  /// hang.
   void power_on();
+  /// A hung module: the CPU stops for good (its processes never run again) and its links stop
+  /// acknowledging, but it stays powered until power_off(). Not from a process of this node.
+  void hang();
+  bool hung() const { return hung_; }
 
 private:
   [[noreturn]] static void no_current_node();
@@ -106,6 +113,7 @@ private:
   std::unique_ptr<MemoryArena> memory_;
   std::array<Attachment, kLinks> links_{};
   bool powered_ = true;
+  bool hung_ = false;
   TrackId events_track_ = 0;
 };
 

@@ -103,6 +103,20 @@ struct WireSpec {
 };
 
 /// A whole platform: the processor type, nodes, devices and wiring.
+/// The overswitch: a hardware block (not a transputer) that powers some of the modules, keeps
+/// a watchdog per powered module and chooses which spare to power when one fails (the logic is
+/// the overswitch layer's; these are its timings).
+struct OverswitchSpec {
+  /// The modules it switches, in the order spares are taken; the first `powered_at_once` that
+  /// the platform powers are the pair it starts with.
+  std::vector<std::string> modules;
+  int powered_at_once = 2;
+  Tick heartbeat_period = 0; ///< a powered module's heartbeat process kicks its watchdog this often
+  Tick watchdog_timeout = 0; ///< a watchdog not kicked for this long declares its module failed
+  Tick boot_allowance = 0;   ///< a spare not running this long after its power-on has failed
+  int line = 0;
+};
+
 struct PlatformSpec {
   std::string name;
   std::string description;
@@ -115,11 +129,16 @@ struct PlatformSpec {
   std::vector<NodeSpec> nodes;
   std::vector<DeviceSpec> devices;
   std::vector<WireSpec> wires;
+  std::optional<OverswitchSpec> overswitch;
 
   const NodeSpec* find_node(const std::string& name) const;
   const DeviceSpec* find_device(const std::string& name) const;
   /// The wire at an endpoint, or nullptr when that link is unconnected.
   const WireSpec* wire_at(const LinkEndpoint& endpoint) const;
+  /// A wire directly joining nodes `x` and `y`, either way round; a sound one if there is one,
+  /// else a broken one (so that a message can say the cable is broken, not missing); nullptr
+  /// if none joins them.
+  const WireSpec* wire_between(const std::string& x, const std::string& y) const;
 };
 
 /// Reads a platform file and the processor file it names (relative to the platform file);

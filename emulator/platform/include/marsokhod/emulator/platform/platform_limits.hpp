@@ -73,6 +73,9 @@ inline constexpr std::int32_t kMaxWaitStates = 64;
 /// Nodes and devices of one platform. Every per-node step (wiring, attaching links, a trace
 /// track each) stays small; the largest T805 machines had about a thousand processors.
 inline constexpr std::size_t kMaxNodes = 1'024;
+/// Overswitch timings, microseconds: from 1 us to an hour.
+inline constexpr std::int64_t kMinOverswitchUs = 1;
+inline constexpr std::int64_t kMaxOverswitchUs = 3'600'000'000;
 inline constexpr std::size_t kMaxDevices = 1'024;
 /// Links of a device: the IMS C004 link switch, the widest INMOS link device, has 32.
 inline constexpr int kMaxDeviceLinks = 32;

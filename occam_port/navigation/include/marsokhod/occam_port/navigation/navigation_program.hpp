@@ -8,6 +8,7 @@
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav/work/work.hpp"
+#include "marsokhod/occam_port/navigation/cycle_supervisor.hpp"
 #include "marsokhod/occam_port/navigation/memory_plan.hpp"
 #include "marsokhod/occam_port/navigation/placement.hpp"
 #include "marsokhod/occam_port/navigation/work_costs.hpp"
@@ -43,6 +44,10 @@ struct CycleSetup {
   emulator::TraceSink* trace = nullptr;
   /// The cycles of the program's occam over the cost table's (kOccamStyleFactor, fitted).
   double occam_style = kOccamStyleFactor;
+  /// Watches and steers the run (the overswitch); it then ends when the program's last
+  /// process does, when the supervisor abandons it, or at `time_limit`.
+  CycleSupervisor* supervisor = nullptr;
+  std::optional<emulator::Tick> time_limit;
 };
 
 /// One stage of the cycle: from the moment its process had its input to the moment it had
@@ -111,6 +116,14 @@ struct CycleEmulation {
   /// What reached the host or ground link: the path and the drive commands, then the wheel
   /// commands the motion scheme gave, each upload as the device received it.
   std::vector<std::vector<std::byte>> telemetry;
+  /// When each upload reached its device, and from which node.
+  std::vector<DeviceUpload> uploads;
+  /// Times a supervisor started the program again (after a failover).
+  int restarts = 0;
+  /// The program's last process ended (false when abandoned, cut by the time limit, or faulted).
+  bool finished = false;
+  /// Why a supervisor abandoned the cycle, if it did.
+  std::optional<std::string> abandoned;
   std::uint64_t context_switches = 0;
 };
 
@@ -118,7 +131,8 @@ struct CycleEmulation {
 /// (or the host) over a link, features and pyramid, matching layer by layer, range and
 /// elevation, prohibited zones, safest path, drive commands, the motion scheme at high
 /// priority and telemetry, each an OCCAM process on the node its placement names, their buffers
-/// from that node's memory. A memory fault ends the run cleanly (memory_fault set). Throws
+/// from that node's memory. A memory fault ends the run cleanly (memory_fault set). The
+/// products are from the run that finished (after any restart); absent if none did. Throws
 /// std::invalid_argument for images that do not fit the rig or bad options; the placement must
 /// come from load_placement for this platform and navigation_program_shape().
 CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetup& setup);

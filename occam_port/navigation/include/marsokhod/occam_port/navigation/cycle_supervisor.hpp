@@ -1,0 +1,66 @@
+// The hook through which a layer above (the overswitch) watches and steers an emulated cycle.
+#pragma once
+
+#include "marsokhod/emulator/kernel/kernel.hpp"
+#include "marsokhod/emulator/links/link_network.hpp"
+#include "marsokhod/emulator/links/shared_output.hpp"
+#include "marsokhod/emulator/node/node.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <string>
+
+namespace marsokhod::occam_port {
+
+/// What a supervisor may see and do in a running cycle; the cycle implements it.
+class CycleControl {
+public:
+  virtual ~CycleControl() = default;
+
+  virtual emulator::Kernel& kernel() = 0;
+  virtual const emulator::PlatformSpec& platform() const = 0;
+  virtual emulator::LinkNetwork& links() = 0;
+  /// std::out_of_range for a node the platform does not have.
+  virtual emulator::Node& node(const std::string& name) = 0;
+  /// The output of a node's device link, which the program's processes share; nullptr for a
+  /// node without one.
+  virtual emulator::SharedOutput* device_output(const std::string& node) = 0;
+  /// `sink` receives the name of the node whose heartbeat byte reached a device link.
+  virtual void on_heartbeat(std::function<void(const std::string& node)> sink) = 0;
+  /// The program's code bytes on the node that runs `node`'s share of it now (what a spare
+  /// taking its place must be booted with); 0 for a node that runs none of it.
+  virtual std::size_t code_bytes(const std::string& node) const = 0;
+  /// The node that runs `process` now.
+  virtual const std::string& node_of(const std::string& process) const = 0;
+
+  /// Starts the cycle again from its first process, at once: kills the program's processes on
+  /// every node, resets the device links of the nodes that run it, and starts them with every
+  /// process of a node named in `moved` placed on its replacement. The replacement must be
+  /// running and hold the code (booted); channels go on the wires joining the new nodes.
+  virtual void restart(const std::map<std::string, std::string>& moved) = 0;
+  /// Ends the cycle unfinished (a safe stop): kills the program's processes and stops the run.
+  virtual void abandon(const std::string& why) = 0;
+};
+
+/// Watches a cycle (CycleSetup::supervisor): told when it can act and how the program goes.
+class CycleSupervisor {
+public:
+  virtual ~CycleSupervisor() = default;
+  /// The network is built, the program about to start; the control lives for the whole run.
+  virtual void attach(CycleControl& control) = 0;
+  /// A process of the program had its input and starts its stage (after a restart, again).
+  virtual void stage_started(const std::string& /*process*/, emulator::Tick /*at*/) {}
+  /// The run is over and its network about to go: nothing of it may be touched after this.
+  virtual void detach() {}
+};
+
+/// An upload a device received (telemetry, the wheel commands): when, from which node.
+struct DeviceUpload {
+  emulator::Tick time = 0;
+  std::string node;
+  std::size_t bytes = 0;
+};
+
+} // namespace marsokhod::occam_port

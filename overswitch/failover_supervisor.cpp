@@ -1,0 +1,119 @@
+// Heartbeats, watchdogs, faults and failover around one emulated cycle.
+
+#include "marsokhod/overswitch/failover_supervisor.hpp"
+
+#include "marsokhod/overswitch/heartbeat.hpp"
+#include "marsokhod/overswitch/link_boot.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace marsokhod::overswitch {
+
+FailoverSupervisor::FailoverSupervisor(const emulator::PlatformSpec& platform,
+                                       std::vector<Fault> faults)
+    : platform_(&platform), faults_(std::move(faults)), scheduled_(faults_.size(), false) {
+  if (!platform.overswitch)
+    throw std::invalid_argument(fmt::format(
+        "platform {} has no [overswitch] table: no failover to supervise", platform.name));
+}
+
+FailoverSupervisor::~FailoverSupervisor() = default;
+
+void FailoverSupervisor::attach(occam_port::CycleControl& control) {
+  control_ = &control;
+  const emulator::OverswitchSpec& spec = *platform_->overswitch;
+  std::vector<emulator::Node*> modules;
+  for (const std::string& name : spec.modules)
+    modules.push_back(&control.node(name));
+  overswitch_ = std::make_unique<Overswitch>(
+      control.kernel(), spec, modules,
+      [this](emulator::Node& spare, emulator::Node& from, std::function<void()> done) {
+        boot(spare, from, std::move(done));
+      });
+  overswitch_->on_booted([this](const Failover& failover) { booted(failover); });
+  overswitch_->on_safe_stop([this] {
+    const std::string why = overswitch_->events().back().detail;
+    control_->kernel().schedule_after(0, emulator::event_priority::normal,
+                                      [this, why] { control_->abandon(why); });
+  });
+  control.on_heartbeat([this](const std::string& node) {
+    const auto& names = platform_->overswitch->modules;
+    if (std::find(names.begin(), names.end(), node) != names.end())
+      overswitch_->kick(control_->node(node));
+  });
+  for (emulator::Node* module : modules)
+    if (module->running())
+      if (emulator::SharedOutput* output = control.device_output(module->name()))
+        start_heartbeat(*module, *output, spec.heartbeat_period);
+  overswitch_->start();
+  for (std::size_t i = 0; i < faults_.size(); ++i)
+    if (faults_[i].stage.empty()) {
+      scheduled_[i] = true;
+      schedule(faults_[i], faults_[i].offset);
+    }
+}
+
+void FailoverSupervisor::stage_started(const std::string& process, emulator::Tick at) {
+  for (std::size_t i = 0; i < faults_.size(); ++i)
+    if (!scheduled_[i] && faults_[i].stage == process) {
+      scheduled_[i] = true;
+      schedule(faults_[i], at + faults_[i].offset);
+    }
+}
+
+void FailoverSupervisor::detach() {
+  if (overswitch_)
+    overswitch_->stop();
+  control_ = nullptr;
+}
+
+// Power changes settle before anything else at their instant.
+void FailoverSupervisor::schedule(const Fault& fault, emulator::Tick at) {
+  control_->kernel().schedule_at(
+      at, emulator::event_priority::power, [this, fault] { inject(fault); });
+}
+
+void FailoverSupervisor::inject(const Fault& fault) {
+  emulator::Node* node = nullptr;
+  try {
+    node = &control_->node(fault.module);
+  } catch (const std::out_of_range&) {
+    error_ = fmt::format("fault {}: the platform has no module {}", describe(fault), fault.module);
+    control_->abandon(*error_);
+    return;
+  }
+  injected_.push_back({fault, control_->kernel().now()});
+  if (fault.kind == Fault::Kind::hang)
+    node->hang();
+  else
+    node->power_off();
+}
+
+// The spare takes the place of the oldest module that failed with a share of the program.
+void FailoverSupervisor::boot(emulator::Node& spare, emulator::Node& from,
+                              std::function<void()> done) {
+  const std::string& failed = overswitch_->failovers().back().failed;
+  if (control_->code_bytes(failed) > 0)
+    vacated_.push_back(failed);
+  const std::size_t code = vacated_.empty() ? 0 : control_->code_bytes(vacated_.front());
+  boot_over_link(control_->platform(), control_->links(), spare, from, code, std::move(done));
+}
+
+void FailoverSupervisor::booted(const Failover& failover) {
+  emulator::Node& spare = control_->node(failover.spare);
+  if (emulator::SharedOutput* output = control_->device_output(spare.name()))
+    start_heartbeat(spare, *output, platform_->overswitch->heartbeat_period);
+  if (vacated_.empty())
+    return;
+  const std::string vacated = vacated_.front();
+  vacated_.erase(vacated_.begin());
+  control_->kernel().schedule_after(0, emulator::event_priority::normal,
+                                    [this, vacated, spare = failover.spare] {
+                                      control_->restart({{vacated, spare}});
+                                    });
+}
+
+} // namespace marsokhod::overswitch

@@ -1,0 +1,61 @@
+// FailoverSupervisor: the overswitch, the heartbeats and the injected faults around a cycle.
+#pragma once
+
+#include "marsokhod/occam_port/navigation/cycle_supervisor.hpp"
+#include "marsokhod/overswitch/fault.hpp"
+#include "marsokhod/overswitch/overswitch.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace marsokhod::overswitch {
+
+/// A fault as it happened in the run.
+struct InjectedFault {
+  Fault fault;
+  emulator::Tick at = 0;
+};
+
+/// Supervises one emulated cycle on a platform with an [overswitch] table: starts a heartbeat
+/// on each powered module, arms the overswitch's watchdogs, injects the faults when they are
+/// due, and on each failover boots the spare over a link from the survivor and restarts the
+/// cycle with the failed module's processes on the spare; a safe stop abandons the cycle.
+class FailoverSupervisor final : public occam_port::CycleSupervisor {
+public:
+  /// std::invalid_argument when the platform has no [overswitch] table.
+  FailoverSupervisor(const emulator::PlatformSpec& platform, std::vector<Fault> faults);
+  FailoverSupervisor(const FailoverSupervisor&) = delete;
+  FailoverSupervisor& operator=(const FailoverSupervisor&) = delete;
+  ~FailoverSupervisor() override;
+
+  void attach(occam_port::CycleControl& control) override;
+  void stage_started(const std::string& process, emulator::Tick at) override;
+  void detach() override;
+
+  /// After the run: the overswitch's log and failovers, and the faults that happened.
+  const Overswitch& overswitch() const { return *overswitch_; }
+  const std::vector<InjectedFault>& injected() const { return injected_; }
+  /// An injected fault that named no node of the platform or no stage of the program.
+  const std::optional<std::string>& error() const { return error_; }
+
+private:
+  void schedule(const Fault& fault, emulator::Tick at);
+  void inject(const Fault& fault);
+  void boot(emulator::Node& spare, emulator::Node& from, std::function<void()> done);
+  void booted(const Failover& failover);
+
+  const emulator::PlatformSpec* platform_;
+  std::vector<Fault> faults_;
+  std::vector<bool> scheduled_;
+  occam_port::CycleControl* control_ = nullptr;
+  std::unique_ptr<Overswitch> overswitch_;
+  /// Modules that ran a share of the program and failed, oldest first, until a spare takes
+  /// their place.
+  std::vector<std::string> vacated_;
+  std::vector<InjectedFault> injected_;
+  std::optional<std::string> error_;
+};
+
+} // namespace marsokhod::overswitch
