@@ -7,6 +7,7 @@
 #include "nav_outputs.hpp"
 #include "option_checks.hpp"
 #include "pair_inputs.hpp"
+#include "platform_choice.hpp"
 #include "trace_file.hpp"
 
 #include "marsokhod/emulator/platform/platform.hpp"
@@ -52,14 +53,6 @@ struct Pair {
   imaging::Attitude attitude;
   std::string description;
 };
-
-// A shipped platform may be named ("onboard", "pc-card.toml") as well as given as a file.
-emu::PlatformSpec platform_for(const std::string& name) {
-  if (fs::exists(name) || name.find('/') != std::string::npos)
-    return emu::load_platform(name);
-  return emu::load_platform(
-      emu::find_platform_file(name.ends_with(".toml") ? name : name + ".toml"));
-}
 
 Pair files_pair(const EmulateCli& cli) {
   Pair pair;

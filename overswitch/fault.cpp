@@ -83,6 +83,8 @@ Fault parse_fault(std::string_view spec) {
   const std::string_view when = spec.substr(at + 1);
   if (when.empty())
     fail(spec, "nothing after '@': give a time (1.05s) or a stage (matching+0.5s)");
+  if (when.front() == '-')
+    fail(spec, "times count from the cycle's start and cannot be negative");
   if (std::isdigit(static_cast<unsigned char>(when.front())) || when.front() == '.') {
     fault.offset = duration_of(spec, when);
     return fault;

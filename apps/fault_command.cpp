@@ -1,0 +1,205 @@
+// `marsokhod fault --platform FILE --inject SPEC ...`: one onboard cycle with injected faults,
+// judged against the fault-free run and the world's ground truth (docs/faults.md).
+
+#include "command.hpp"
+#include "fault_verdict.hpp"
+#include "option_checks.hpp"
+#include "platform_choice.hpp"
+#include "trace_file.hpp"
+
+#include "marsokhod/eval/terrain/terrain_scoring.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
+#include "marsokhod/occam_port/navigation/navigation_program.hpp"
+#include "marsokhod/world/scene/rendered_site.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace emu = emulator;
+
+/// Longest a fault run may take, emulated: the onboard cycle takes about 20 s, a restart
+/// doubles it; past this, with no watchdog running out, the run counts as a hang.
+constexpr emu::Tick kTimeLimit = 600 * emu::kSecond;
+
+struct FaultCli {
+  std::string platform;
+  std::uint64_t seed = 1;
+  std::vector<std::string> inject;
+  std::optional<std::string> trace;
+  bool json = false;
+};
+
+/// The rendered scene, its ground truth and what the cycle is given.
+struct Scene {
+  world::SceneDescription description;
+  world::RenderedFrame frame;
+  imaging::StereoRig rig;
+  nav::TerrainPoints truth_terrain;
+};
+
+std::unique_ptr<Scene> render(std::uint64_t seed) {
+  world::SceneDescription description = world::default_scene(seed, 128);
+  world::RenderedFrame frame = world::render_site(description);
+  const imaging::StereoRig rig(description.rig);
+  nav::TerrainPoints truth_terrain =
+      nav::reconstruct_terrain(frame.truth.disparity, rig, description.placement.attitude);
+  return std::make_unique<Scene>(
+      Scene{std::move(description), std::move(frame), rig, std::move(truth_terrain)});
+}
+
+struct Runner {
+  const emu::PlatformSpec& platform;
+  const occam_port::Placement& placement;
+  const Scene& scene;
+
+  bool crosses(const occam_port::CycleEmulation& run) const {
+    return run.result && run.result->found() &&
+           eval::crosses_obstacle(run.result->plan, scene.truth_terrain, scene.frame.truth);
+  }
+
+  occam_port::CycleEmulation run(overswitch::FailoverSupervisor& supervisor,
+                                 emu::TraceSink* trace) const {
+    occam_port::CycleInput input{scene.frame.images.left, scene.frame.images.right, &scene.rig, {}};
+    input.options.attitude = scene.description.placement.attitude;
+    occam_port::CycleSetup setup{
+        &platform,   &placement, std::nullopt, trace, occam_port::kOccamStyleFactor,
+        &supervisor, kTimeLimit};
+    return occam_port::emulate_navigation_cycle(input, setup);
+  }
+};
+
+std::vector<overswitch::Fault> parse_faults(const FaultCli& cli,
+                                            const emu::PlatformSpec& platform) {
+  std::vector<overswitch::Fault> faults;
+  for (const std::string& spec : cli.inject) {
+    overswitch::Fault fault = overswitch::parse_fault(spec);
+    if (platform.find_node(fault.module) == nullptr)
+      throw UsageError(fmt::format("--inject '{}': platform {} has no module {}", spec,
+                                   platform.name, fault.module));
+    const auto& processes = occam_port::navigation_program_shape().processes;
+    if (!fault.stage.empty() &&
+        std::find(processes.begin(), processes.end(), fault.stage) == processes.end())
+      throw UsageError(fmt::format("--inject '{}': '{}' is no stage of the program (stages: {})",
+                                   spec, fault.stage, fmt::join(processes, ", ")));
+    faults.push_back(std::move(fault));
+  }
+  return faults;
+}
+
+void print_verdict(const FaultVerdict& v, const overswitch::FailoverSupervisor& supervisor) {
+  fmt::print("outcome: {}{}\n", to_string(v.outcome),
+             v.reason.empty() ? "" : " (" + v.reason + ")");
+  for (const overswitch::InjectedFault& f : supervisor.injected())
+    fmt::print("  {:9.6f} s  fault {}\n", emu::to_seconds(f.at), overswitch::describe(f.fault));
+  for (const overswitch::OverswitchEvent& e : supervisor.overswitch().events())
+    fmt::print("  {:9.6f} s  overswitch: {} {}{}\n", emu::to_seconds(e.time),
+               overswitch::to_string(e.kind), e.module, e.detail.empty() ? "" : ": " + e.detail);
+  if (v.detection_latency_s)
+    fmt::print("detected after {:.6f} s", *v.detection_latency_s);
+  if (v.recovery_s)
+    fmt::print(", pair whole again {:.6f} s later", *v.recovery_s);
+  if (v.detection_latency_s)
+    fmt::print("\n");
+  fmt::print("cycle {:.3f} s emulated ({:+.3f} s on the fault-free run); path {} the fault-free "
+             "one; {}; telemetry {}; wheels {}commanded by a failed module\n",
+             v.emulated_s, v.delay_s, v.path_equals_golden ? "equals" : "differs from",
+             v.unsafe ? "UNSAFE: the path crosses an obstacle" : "safe",
+             v.telemetry_lost ? "lost" : "delivered",
+             v.wheels_commanded_while_failed ? "" : "never ");
+}
+
+int run_fault(const FaultCli& cli) {
+  const emu::PlatformSpec platform = platform_for(cli.platform);
+  if (!platform.overswitch)
+    throw CommandError(fmt::format("{}: platform {} has no [overswitch] table, so no module can "
+                                   "fail over (the onboard platform has one)",
+                                   platform.source, platform.name));
+  const std::vector<overswitch::Fault> faults = parse_faults(cli, platform);
+  const occam_port::Placement placement =
+      occam_port::load_placement(occam_port::default_placement_file(platform), platform,
+                                 occam_port::navigation_program_shape());
+  if (!cli.json)
+    fmt::print(stderr, "rendering world seed {} at 128x128...\n", cli.seed);
+  const std::unique_ptr<Scene> scene = render(cli.seed);
+  const Runner runner{platform, placement, *scene};
+
+  overswitch::FailoverSupervisor fault_free(platform, {});
+  GoldenRun golden{runner.run(fault_free, nullptr), false};
+  if (!golden.run.finished)
+    throw CommandError("the fault-free cycle did not finish: " +
+                       golden.run.abandoned.value_or("no reason given"));
+  golden.unsafe = runner.crosses(golden.run);
+
+  overswitch::FailoverSupervisor supervisor(platform, faults);
+  const auto faulty = [&](emu::TraceSink* sink) { return runner.run(supervisor, sink); };
+  const occam_port::CycleEmulation run =
+      cli.trace ? with_trace_file(*cli.trace, [&](emu::ChromeTraceWriter& w) { return faulty(&w); })
+                : faulty(nullptr);
+  const FaultVerdict verdict = judge_fault_run(golden, run, supervisor, runner.crosses(run));
+  if (!cli.json) {
+    print_verdict(verdict, supervisor);
+    return kSuccess;
+  }
+  nlohmann::ordered_json j;
+  j["platform"] = platform.name;
+  j["seed"] = cli.seed;
+  j["faults"] = nlohmann::ordered_json::array();
+  for (const overswitch::InjectedFault& f : supervisor.injected())
+    j["faults"].push_back(
+        {{"spec", overswitch::describe(f.fault)}, {"at_s", emu::to_seconds(f.at)}});
+  j.update(verdict_json(verdict));
+  j["overswitch_events"] = nlohmann::ordered_json::array();
+  for (const overswitch::OverswitchEvent& e : supervisor.overswitch().events())
+    j["overswitch_events"].push_back({{"time_s", emu::to_seconds(e.time)},
+                                      {"event", overswitch::to_string(e.kind)},
+                                      {"module", e.module},
+                                      {"detail", e.detail}});
+  j["device_log"] = nlohmann::ordered_json::array();
+  for (const occam_port::DeviceUpload& u : run.uploads)
+    j["device_log"].push_back(
+        {{"time_s", emu::to_seconds(u.time)}, {"from", u.node}, {"bytes", u.bytes}});
+  fmt::print("{}\n", j.dump(2));
+  return kSuccess;
+}
+
+} // namespace
+
+Command make_fault_command(CLI::App& parent) {
+  CLI::App* app = parent.add_subcommand(
+      "fault", "Run one onboard navigation cycle with injected faults under the overswitch's "
+               "watchdogs and failover, and judge it against the fault-free run and the world's "
+               "ground truth (docs/faults.md).");
+  auto cli = std::make_shared<FaultCli>();
+  app->add_option(
+         "--platform", cli->platform,
+         "Platform file with an [overswitch] table, or a shipped platform's name (onboard)")
+      ->required();
+  app->add_option("--seed", cli->seed, "World seed of the rendered scene")
+      ->capture_default_str()
+      ->transform(integer_between<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()));
+  app->add_option("--inject", cli->inject,
+                  "A fault, KIND:MODULE@WHEN, repeatable: KIND hang or power; WHEN a time from "
+                  "the cycle's start (1.05s, 250ms) or a stage and an offset (matching+0.5s)")
+      ->required();
+  app->add_option("--trace", cli->trace, "Write a Chrome trace (Perfetto) of the faulty run here");
+  app->add_flag("--json", cli->json, "Print a machine-readable verdict on stdout");
+  return {app, [cli] {
+            try {
+              return run_fault(*cli);
+            } catch (const overswitch::FaultSpecError& error) {
+              throw UsageError(error.what());
+            }
+          }};
+}
+
+} // namespace marsokhod::apps

@@ -1,0 +1,141 @@
+// Judging a fault run: outcome class, detection, recovery, telemetry and wheel commands.
+
+#include "fault_verdict.hpp"
+
+#include <algorithm>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace emu = emulator;
+
+bool same_path(const occam_port::CycleEmulation& a, const occam_port::CycleEmulation& b) {
+  return a.result && b.result && a.result->plan.found == b.result->plan.found &&
+         a.result->plan.pixels == b.result->plan.pixels;
+}
+
+// The golden cycle's uploads must be the last ones the device received, byte for byte.
+bool telemetry_delivered(const occam_port::CycleEmulation& golden,
+                         const occam_port::CycleEmulation& run) {
+  if (!run.finished || run.telemetry.size() < golden.telemetry.size())
+    return false;
+  return std::equal(golden.telemetry.begin(), golden.telemetry.end(),
+                    run.telemetry.end() - static_cast<std::ptrdiff_t>(golden.telemetry.size()));
+}
+
+// An upload from a module after a fault struck it: a failed module commanding the wheels.
+bool failed_module_uploaded(const occam_port::CycleEmulation& run,
+                            const overswitch::FailoverSupervisor& supervisor) {
+  for (const overswitch::InjectedFault& fault : supervisor.injected())
+    for (const occam_port::DeviceUpload& upload : run.uploads)
+      if (upload.node == fault.fault.module && upload.time >= fault.at)
+        return true;
+  return false;
+}
+
+Outcome classify(const FaultVerdict& v, const occam_port::CycleEmulation& run,
+                 const overswitch::FailoverSupervisor& supervisor) {
+  if (supervisor.error() || run.memory_fault)
+    return Outcome::error;
+  if (run.abandoned)
+    return Outcome::safe_stop;
+  if (!run.finished)
+    return Outcome::hang;
+  if (v.unsafe && !v.golden_unsafe)
+    return Outcome::unsafe;
+  if (!v.path_equals_golden)
+    return Outcome::sdc_safe;
+  return supervisor.overswitch().failovers().empty() ? Outcome::masked : Outcome::recovered;
+}
+
+std::string reason_of(const occam_port::CycleEmulation& run,
+                      const overswitch::FailoverSupervisor& supervisor) {
+  if (supervisor.error())
+    return *supervisor.error();
+  if (run.memory_fault)
+    return "memory fault on " + run.memory_fault->node + " in " + run.memory_fault->process;
+  if (run.abandoned)
+    return *run.abandoned;
+  if (!run.finished)
+    return "the cycle did not end and no watchdog ran out";
+  return {};
+}
+
+} // namespace
+
+const char* to_string(Outcome outcome) {
+  switch (outcome) {
+  case Outcome::masked:
+    return "masked";
+  case Outcome::recovered:
+    return "recovered";
+  case Outcome::safe_stop:
+    return "safe_stop";
+  case Outcome::sdc_safe:
+    return "sdc_safe";
+  case Outcome::unsafe:
+    return "unsafe";
+  case Outcome::hang:
+    return "hang";
+  case Outcome::error:
+    return "error";
+  }
+  return "?";
+}
+
+FaultVerdict judge_fault_run(const GoldenRun& golden, const occam_port::CycleEmulation& run,
+                             const overswitch::FailoverSupervisor& supervisor,
+                             bool crosses_obstacle) {
+  FaultVerdict v;
+  const auto& failovers = supervisor.overswitch().failovers();
+  v.detected = !failovers.empty();
+  for (const overswitch::Failover& f : failovers) {
+    const emu::Tick powered = f.detected;
+    v.failovers.push_back({f.failed, f.spare, f.ok ? emu::to_seconds(f.booted - powered) : 0.0});
+  }
+  if (v.detected && !supervisor.injected().empty())
+    v.detection_latency_s =
+        emu::to_seconds(failovers.front().detected - supervisor.injected().front().at);
+  const auto whole = std::find_if(failovers.begin(), failovers.end(),
+                                  [](const overswitch::Failover& f) { return f.ok; });
+  if (whole != failovers.end())
+    v.recovery_s = emu::to_seconds(whole->booted - failovers.front().detected);
+  v.path_equals_golden = run.finished && same_path(golden.run, run);
+  v.golden_unsafe = golden.unsafe;
+  v.unsafe = run.finished && crosses_obstacle;
+  v.telemetry_lost = !telemetry_delivered(golden.run, run);
+  v.wheels_commanded_while_failed = failed_module_uploaded(run, supervisor);
+  v.emulated_s = emu::to_seconds(run.emulated);
+  v.delay_s = emu::to_seconds(run.emulated - golden.run.emulated);
+  v.outcome = classify(v, run, supervisor);
+  v.reason = reason_of(run, supervisor);
+  return v;
+}
+
+nlohmann::ordered_json verdict_json(const FaultVerdict& v) {
+  nlohmann::ordered_json j;
+  j["outcome"] = to_string(v.outcome);
+  if (!v.reason.empty())
+    j["reason"] = v.reason;
+  j["detected"] = v.detected;
+  j["detection_latency_s"] = v.detection_latency_s ? nlohmann::ordered_json(*v.detection_latency_s)
+                                                   : nlohmann::ordered_json(nullptr);
+  j["recovery_s"] =
+      v.recovery_s ? nlohmann::ordered_json(*v.recovery_s) : nlohmann::ordered_json(nullptr);
+  j["failovers"] = nlohmann::ordered_json::array();
+  for (const FailoverFigure& f : v.failovers)
+    j["failovers"].push_back({{"failed", f.failed},
+                              {"spare", f.spare.empty() ? nlohmann::ordered_json(nullptr)
+                                                        : nlohmann::ordered_json(f.spare)},
+                              {"boot_s", f.boot_s}});
+  j["path_equals_golden"] = v.path_equals_golden;
+  j["unsafe"] = v.unsafe;
+  j["golden_unsafe"] = v.golden_unsafe;
+  j["telemetry_lost"] = v.telemetry_lost;
+  j["wheels_commanded_while_failed"] = v.wheels_commanded_while_failed;
+  j["emulated_s"] = v.emulated_s;
+  j["delay_s"] = v.delay_s;
+  return j;
+}
+
+} // namespace marsokhod::apps

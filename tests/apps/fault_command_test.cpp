@@ -1,0 +1,72 @@
+// `marsokhod fault`: one run judged against the fault-free one; bad specs and platforms refused
+// with the problem named.
+
+#include "support/run_marsokhod.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace {
+
+using marsokhod::testing::run_marsokhod;
+
+TEST(FaultCommand, HangOfTheMapModuleIsRecoveredWithTheFaultFreePath) {
+  const auto result =
+      run_marsokhod("fault --platform onboard --seed 2 --inject hang:module1@1.05s --json");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json j = nlohmann::json::parse(result.out);
+  EXPECT_EQ(j["outcome"], "recovered");
+  EXPECT_TRUE(j["detected"].get<bool>());
+  // Kicks every 100 ms: the last before 1.05 s at 1.0 s, the 200 ms timeout, the kick's own
+  // latency (at most 4 us: interrupt latency, out, 1.1 us on the wire).
+  EXPECT_GE(j["detection_latency_s"].get<double>(), 0.15);
+  EXPECT_LE(j["detection_latency_s"].get<double>(), 0.150004);
+  ASSERT_EQ(j["failovers"].size(), 1U);
+  EXPECT_EQ(j["failovers"][0]["failed"], "module1");
+  EXPECT_EQ(j["failovers"][0]["spare"], "module2");
+  EXPECT_TRUE(j["path_equals_golden"].get<bool>());
+  EXPECT_FALSE(j["telemetry_lost"].get<bool>());
+  EXPECT_FALSE(j["wheels_commanded_while_failed"].get<bool>());
+  for (const auto& upload : j["device_log"])
+    EXPECT_NE(upload["from"], "module1");
+}
+
+TEST(FaultCommand, FaultsOnBothModulesAtOnceEndInASafeStop) {
+  const auto result = run_marsokhod(
+      "fault --platform onboard --seed 2 --inject hang:module0@1s --inject power:module1@1s "
+      "--json");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json j = nlohmann::json::parse(result.out);
+  EXPECT_EQ(j["outcome"], "safe_stop");
+  EXPECT_TRUE(j["telemetry_lost"].get<bool>());
+  EXPECT_FALSE(j["path_equals_golden"].get<bool>());
+}
+
+TEST(FaultCommand, BadSpecsAreRefusedNamingTheSpecAndTheProblem) {
+  const struct {
+    const char* spec;
+    const char* problem;
+  } cases[] = {
+      {"melt:module1@1s", "unknown fault kind 'melt'"}, {"hang:module9@1s", "no module module9"},
+      {"hang:module1@zonez+1s", "'zonez' is no stage"}, {"hang:module1@-3s", "cannot be negative"},
+      {"hang:module1@4000s", "between 0 and 3600 s"},   {"hang:module1@1 s", "is no time"},
+      {"hang module1 1s", "KIND:MODULE@WHEN"},
+  };
+  for (const auto& c : cases) {
+    const auto result =
+        run_marsokhod(std::string("fault --platform onboard --inject '") + c.spec + "'");
+    EXPECT_EQ(result.exit_code, 2) << c.spec;
+    EXPECT_NE(result.err.find(c.spec), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find(c.problem), std::string::npos) << result.err;
+  }
+}
+
+TEST(FaultCommand, PlatformWithoutAnOverswitchIsRefused) {
+  const auto result = run_marsokhod("fault --platform pc-card --inject hang:card@1s");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("no [overswitch] table"), std::string::npos) << result.err;
+}
+
+} // namespace
