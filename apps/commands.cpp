@@ -16,13 +16,14 @@ Command make_commstime_command(CLI::App& parent);
 Command make_emulate_command(CLI::App& parent);
 Command make_reproduce_command(CLI::App& parent);
 Command make_fault_command(CLI::App& parent);
+Command make_campaign_command(CLI::App& parent);
 
 const std::vector<CommandFactory>& command_factories() {
   static const std::vector<CommandFactory> factories = {
       // Subcommands are added here.
       make_world_command,     make_image_command,     make_rig_command,      make_nav_command,
       make_calibrate_command, make_eval_command,      make_linktest_command, make_commstime_command,
-      make_emulate_command,   make_reproduce_command, make_fault_command,
+      make_emulate_command,   make_reproduce_command, make_fault_command,    make_campaign_command,
   };
   return factories;
 }

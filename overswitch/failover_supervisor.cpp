@@ -47,7 +47,7 @@ void FailoverSupervisor::attach(occam_port::CycleControl& control) {
   for (emulator::Node* module : modules)
     if (module->running())
       if (emulator::SharedOutput* output = control.device_output(module->name()))
-        start_heartbeat(*module, *output, spec.heartbeat_period);
+        start_heartbeat(*module, *output, spec.heartbeat_period, heartbeats_stop_);
   overswitch_->start();
   for (std::size_t i = 0; i < faults_.size(); ++i)
     if (faults_[i].stage.empty()) {
@@ -62,6 +62,22 @@ void FailoverSupervisor::stage_started(const std::string& process, emulator::Tic
       scheduled_[i] = true;
       schedule(faults_[i], at + faults_[i].offset);
     }
+}
+
+void FailoverSupervisor::program_finished() {
+  if (injected_.size() <= overswitch_->failovers().size()) {
+    wind_down();
+    return;
+  }
+  const emulator::OverswitchSpec& spec = *platform_->overswitch;
+  control_->kernel().schedule_after(spec.heartbeat_period + spec.watchdog_timeout +
+                                        spec.boot_allowance,
+                                    emulator::event_priority::normal, [this] { wind_down(); });
+}
+
+void FailoverSupervisor::wind_down() {
+  heartbeats_stop_ = true;
+  overswitch_->stop();
 }
 
 void FailoverSupervisor::detach() {
@@ -105,8 +121,8 @@ void FailoverSupervisor::boot(emulator::Node& spare, emulator::Node& from,
 void FailoverSupervisor::booted(const Failover& failover) {
   emulator::Node& spare = control_->node(failover.spare);
   if (emulator::SharedOutput* output = control_->device_output(spare.name()))
-    start_heartbeat(spare, *output, platform_->overswitch->heartbeat_period);
-  if (vacated_.empty())
+    start_heartbeat(spare, *output, platform_->overswitch->heartbeat_period, heartbeats_stop_);
+  if (vacated_.empty() || control_->program_finished())
     return;
   const std::string vacated = vacated_.front();
   vacated_.erase(vacated_.begin());

@@ -7,13 +7,13 @@
 namespace marsokhod::overswitch {
 
 emulator::Process& start_heartbeat(emulator::Node& module, emulator::SharedOutput& device_link,
-                                   emulator::Tick period) {
+                                   emulator::Tick period, const bool& stop) {
   return module.spawn(
       "heartbeat",
-      [&module, &device_link, period] {
+      [&module, &device_link, period, &stop] {
         emulator::Kernel& kernel = module.kernel();
         const std::byte beat = emulator::FrameStore::kHeartbeat;
-        for (emulator::Tick next = kernel.now();; next += period) {
+        for (emulator::Tick next = kernel.now(); !stop; next += period) {
           module.execute(emulator::Instruction::out);
           device_link.output(std::span(&beat, 1));
           kernel.block_until(next + period, emulator::WaitInfo{emulator::WaitKind::timer, nullptr});

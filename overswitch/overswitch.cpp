@@ -43,6 +43,7 @@ Overswitch::Overswitch(emulator::Kernel& kernel, const emulator::OverswitchSpec&
 }
 
 void Overswitch::stop() {
+  stopped_ = true;
   for (Module& m : modules_)
     disarm(m);
 }
@@ -67,6 +68,8 @@ Overswitch::Module& Overswitch::module_of(const emulator::Node& node) {
 // A watchdog keeps the run alive: with every module hung, its expiry is what happens next.
 void Overswitch::arm(Module& m, emulator::Tick after) {
   disarm(m);
+  if (stopped_)
+    return;
   m.deadline =
       kernel_->schedule_after(after, emulator::event_priority::timer, [this, &m] { expire(m); });
 }

@@ -69,6 +69,8 @@ run() {
   # 4 MB modules: a placement that stays valid runs its cycle to the end (exit 0) rather than
   # into a memory fault whose message need not name the file.
   placement) set -- emulate --platform onboard --external-kb 4096 --placement "$file" --out "$dir" ;;
+  # One scene and one run: the file is read whole, and a campaign that stays valid ends in time.
+  campaign) set -- campaign "$file" --runs 1 --seeds 2..2 --out "$dir" ;;
   *) echo "hostile-cli: no command for reader $reader" >&2; return ;;
   esac
   (ulimit -v 4000000 && exec timeout 10 "$binary" "$@") >"$dir/stdout" 2>"$dir/stderr" </dev/null

@@ -152,14 +152,14 @@ void CycleRun::spawn_processes() {
   }
 }
 
-// The program ends when its last process does; a supervised run then stops at once, since the
-// heartbeats would keep it going for ever.
+// The program ends when its last process does.
 void CycleRun::process_ended() {
   if (killing_ || !state().live.empty() || state().killed)
     return;
   finished_ = true;
+  finished_at_ = net_.kernel.now();
   if (setup_->supervisor != nullptr)
-    net_.kernel.stop();
+    setup_->supervisor->program_finished();
 }
 
 void CycleRun::kill_program() {

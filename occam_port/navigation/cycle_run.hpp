@@ -47,6 +47,9 @@ public:
   const std::string& node_of(const std::string& process) const override;
   void restart(const std::map<std::string, std::string>& moved) override;
   void abandon(const std::string& why) override;
+  bool program_finished() const override { return finished_; }
+  /// When the program's last process ended; 0 if it has not.
+  emulator::Tick finished_at() const { return finished_at_; }
 
 private:
   void new_state();
@@ -67,6 +70,7 @@ private:
   int restarts_ = 0;
   bool finished_ = false;
   bool killing_ = false;
+  emulator::Tick finished_at_ = 0;
   std::optional<std::string> abandoned_;
   CycleNetwork net_; // last: its nodes, and the processes on them, go first
 };

@@ -103,7 +103,7 @@ CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetu
     throw std::logic_error(fmt::format("the navigation program stopped ({}) at {} us",
                                        emulator::to_string(result.reason),
                                        emulator::to_microseconds(net.kernel.now())));
-  out.emulated = net.kernel.now();
+  out.emulated = run.finished() ? run.finished_at() : net.kernel.now();
   out.occam_style = setup.occam_style;
   out.stages = std::move(cycle.stages);
   out.memory_fault = cycle.fault;

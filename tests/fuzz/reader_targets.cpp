@@ -8,6 +8,7 @@
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
+#include "marsokhod/overswitch/campaign_file.hpp"
 #include "marsokhod/world/scene/scene.hpp"
 #include "marsokhod/world/scene/scene_file.hpp"
 
@@ -250,6 +251,26 @@ void read_pfm_image(const fs::path& input) {
   check_image(imaging::read_pfm(input), 1);
 }
 
+// ---- campaign files ----
+
+std::vector<Seed> campaign_seeds() {
+  return shipped({"campaigns/hang-power.toml"});
+}
+
+void read_campaign(const fs::path& input) {
+  const overswitch::CampaignSpec spec = overswitch::load_campaign(input);
+  expect(!spec.platform.empty() && !spec.world_seeds.empty() && !spec.faults.empty(),
+         "a campaign without platform, scenarios or faults");
+  expect(spec.runs >= 1 && spec.runs <= overswitch::kMaxCampaignRuns, "runs out of range");
+  expect(finite(spec.rock_cover) && spec.rock_cover >= 0 && spec.rock_cover <= 0.5,
+         "rock_cover out of range");
+  for (const overswitch::FaultMix& mix : spec.faults)
+    expect(finite(mix.weight) && mix.weight > 0 && mix.from_share >= 0 &&
+               mix.from_share < mix.to_share && mix.to_share <= 1,
+           fmt::format("fault mix on line {}: weight {} shares {}..{}", mix.line, mix.weight,
+                       mix.from_share, mix.to_share));
+}
+
 } // namespace
 
 std::vector<Seed> shipped(std::initializer_list<const char*> paths) {
@@ -284,6 +305,7 @@ const std::vector<ReaderTarget>& reader_targets() {
       {"gray8",       "input.img",        Syntax::binary, gray8_seeds,       nullptr,           read_gray8_image, {}},
       {"pfm",         "input.pfm",        Syntax::binary, pfm_seeds,         nullptr,           read_pfm_image,   {}},
       {"placement",   "placement.toml",   Syntax::toml,   placement_seeds,   nullptr,           read_placement,   {}},
+      {"campaign",    "campaign.toml",    Syntax::toml,   campaign_seeds,    nullptr,           read_campaign,    {}},
   };
   // clang-format on
   return targets;

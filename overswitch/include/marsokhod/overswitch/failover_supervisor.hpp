@@ -32,6 +32,10 @@ public:
 
   void attach(occam_port::CycleControl& control) override;
   void stage_started(const std::string& process, emulator::Tick at) override;
+  /// Winds the heartbeats and watchdogs down: at once, or, when a fault has struck that no
+  /// watchdog has seen yet, after long enough for one to (a period for the last kick, the
+  /// timeout) and for a spare to boot, so that a late fault is still seen and handled.
+  void program_finished() override;
   void detach() override;
 
   /// After the run: the overswitch's log and failovers, and the faults that happened.
@@ -45,6 +49,7 @@ private:
   void inject(const Fault& fault);
   void boot(emulator::Node& spare, emulator::Node& from, std::function<void()> done);
   void booted(const Failover& failover);
+  void wind_down();
 
   const emulator::PlatformSpec* platform_;
   std::vector<Fault> faults_;
@@ -56,6 +61,8 @@ private:
   std::vector<std::string> vacated_;
   std::vector<InjectedFault> injected_;
   std::optional<std::string> error_;
+  /// Tells the heartbeats to end at their next beat.
+  bool heartbeats_stop_ = false;
 };
 
 } // namespace marsokhod::overswitch

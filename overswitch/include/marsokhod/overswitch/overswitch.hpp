@@ -104,6 +104,7 @@ private:
   std::vector<Module> modules_;
   BootFunction boot_;
   bool safe_stopped_ = false;
+  bool stopped_ = false; ///< stop(): kicks arm nothing any more
   std::vector<OverswitchEvent> events_;
   std::vector<Failover> failovers_;
   std::function<void(const Failover&)> on_booted_;

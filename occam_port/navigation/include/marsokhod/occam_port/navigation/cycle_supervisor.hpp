@@ -42,6 +42,8 @@ public:
   virtual void restart(const std::map<std::string, std::string>& moved) = 0;
   /// Ends the cycle unfinished (a safe stop): kills the program's processes and stops the run.
   virtual void abandon(const std::string& why) = 0;
+  /// The program's last process has ended (the cycle is done; a restart makes no sense).
+  virtual bool program_finished() const = 0;
 };
 
 /// Watches a cycle (CycleSetup::supervisor): told when it can act and how the program goes.
@@ -52,6 +54,10 @@ public:
   virtual void attach(CycleControl& control) = 0;
   /// A process of the program had its input and starts its stage (after a restart, again).
   virtual void stage_started(const std::string& /*process*/, emulator::Tick /*at*/) {}
+  /// The program's last process has ended. The run goes on while anything is left to happen
+  /// (the last bytes on the links, and whatever the supervisor keeps going: it should wind its
+  /// own processes and events down, at once or once it has seen what it still waits for).
+  virtual void program_finished() {}
   /// The run is over and its network about to go: nothing of it may be touched after this.
   virtual void detach() {}
 };

@@ -95,7 +95,8 @@ struct MemoryFaultFigures {
 
 /// Everything one emulated cycle produced and measured.
 struct CycleEmulation {
-  /// From the cycle's start to the last process's end (or to the fault).
+  /// From the cycle's start to the last process's end (or to the fault, the safe stop or the
+  /// time limit).
   emulator::Tick emulated = 0;
   double occam_style = 0.0; ///< CycleSetup::occam_style, as run
   std::vector<StageFigures> stages;

@@ -1,0 +1,155 @@
+// A campaign's scenes, their golden runs, and each run drawn, emulated and judged.
+
+#include "campaign_runner.hpp"
+
+#include "command.hpp"
+
+#include "marsokhod/eval/terrain/terrain_scoring.hpp"
+#include "marsokhod/occam_port/navigation/navigation_program.hpp"
+#include "marsokhod/world/scene/rendered_site.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace emu = emulator;
+
+/// Longest a run may take, emulated: a cycle of about 20 s restarted a few times; past this,
+/// with no watchdog running out, the run is a hang.
+constexpr emu::Tick kTimeLimit = 600 * emu::kSecond;
+
+/// SplitMix64 (Steele, Lea and Flood, 2014): run k's stream depends on (seed, k) alone.
+class RunRandom {
+public:
+  RunRandom(std::uint64_t seed, std::uint64_t run)
+      : state_(seed * 0x9E3779B97F4A7C15ULL ^ (run + 0x632BE59BD9B4E019ULL)) {
+    next();
+  }
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+  /// Uniform in [0, 1), 53 bits.
+  double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
+
+private:
+  std::uint64_t state_;
+};
+
+std::vector<std::string> powered_modules(const emu::PlatformSpec& platform) {
+  std::vector<std::string> names;
+  for (const std::string& module : platform.overswitch->modules)
+    if (platform.find_node(module)->powered)
+      names.push_back(module);
+  return names;
+}
+
+void check_modules(const overswitch::CampaignSpec& spec, const emu::PlatformSpec& platform) {
+  const auto& modules = platform.overswitch->modules;
+  for (const overswitch::FaultMix& mix : spec.faults)
+    for (const std::string& module : mix.modules)
+      if (std::find(modules.begin(), modules.end(), module) == modules.end())
+        throw overswitch::CampaignError(
+            spec.source, mix.line, "modules",
+            fmt::format("'{}' is no module of {}'s overswitch", module, platform.name));
+}
+
+} // namespace
+
+CampaignRunner::CampaignRunner(const overswitch::CampaignSpec& spec,
+                               const emu::PlatformSpec& platform,
+                               const occam_port::Placement& placement,
+                               const std::function<void(std::size_t done)>& progress)
+    : spec_(&spec), platform_(&platform), placement_(&placement) {
+  check_modules(spec, platform);
+  for (const overswitch::FaultMix& mix : spec.faults)
+    total_weight_ += mix.weight;
+  for (const std::uint64_t seed : spec.world_seeds) {
+    auto scene = std::make_unique<CampaignScene>();
+    scene->world_seed = seed;
+    scene->description = world::default_scene(seed, 128);
+    scene->description.lighting = world::lighting_preset(world::parse_light_preset(spec.light));
+    scene->description.terrain.rock_cover = spec.rock_cover;
+    scene->frame = world::render_site(scene->description);
+    scene->rig = std::make_unique<imaging::StereoRig>(scene->description.rig);
+    scene->truth_terrain = nav::reconstruct_terrain(scene->frame.truth.disparity, *scene->rig,
+                                                    scene->description.placement.attitude);
+    overswitch::FailoverSupervisor fault_free(platform, {});
+    scene->golden.run = emulate(*scene, fault_free, nullptr);
+    if (!scene->golden.run.finished)
+      throw CommandError(fmt::format("world seed {}: the fault-free cycle did not finish", seed));
+    scene->golden.unsafe = crosses(*scene, scene->golden.run);
+    scenes_.push_back(std::move(scene));
+    if (progress)
+      progress(scenes_.size());
+  }
+}
+
+occam_port::CycleEmulation CampaignRunner::emulate(const CampaignScene& scene,
+                                                   overswitch::FailoverSupervisor& supervisor,
+                                                   emu::TraceSink* trace) const {
+  occam_port::CycleInput input{
+      scene.frame.images.left, scene.frame.images.right, scene.rig.get(), {}};
+  input.options.attitude = scene.description.placement.attitude;
+  const occam_port::CycleSetup setup{
+      platform_,   placement_, std::nullopt, trace, occam_port::kOccamStyleFactor,
+      &supervisor, kTimeLimit};
+  return occam_port::emulate_navigation_cycle(input, setup);
+}
+
+bool CampaignRunner::crosses(const CampaignScene& scene,
+                             const occam_port::CycleEmulation& run) const {
+  return run.result && run.result->found() &&
+         eval::crosses_obstacle(run.result->plan, scene.truth_terrain, scene.frame.truth);
+}
+
+// Kind by weight, then module, then the strike time over the fault-free cycle's share.
+CampaignDraw CampaignRunner::draw(std::uint64_t run) const {
+  RunRandom random(spec_->seed, run);
+  CampaignDraw d;
+  d.run = run;
+  d.scene = random.below(scenes_.size());
+  double pick = random.unit() * total_weight_;
+  const overswitch::FaultMix* mix = &spec_->faults.back();
+  for (const overswitch::FaultMix& candidate : spec_->faults) {
+    if (pick < candidate.weight) {
+      mix = &candidate;
+      break;
+    }
+    pick -= candidate.weight;
+  }
+  const std::vector<std::string> modules =
+      mix->modules.empty() ? powered_modules(*platform_) : mix->modules;
+  d.fault.kind = mix->kind;
+  d.fault.module = modules[random.below(modules.size())];
+  const auto cycle = static_cast<double>(scenes_[d.scene]->golden.run.emulated);
+  const double share = mix->from_share + random.unit() * (mix->to_share - mix->from_share);
+  d.fault.offset = static_cast<emu::Tick>(share * cycle);
+  return d;
+}
+
+nlohmann::ordered_json CampaignRunner::run(std::uint64_t run, emu::TraceSink* trace) const {
+  const CampaignDraw d = draw(run);
+  const CampaignScene& scene = *scenes_[d.scene];
+  overswitch::FailoverSupervisor supervisor(*platform_, {d.fault});
+  const occam_port::CycleEmulation emulated = emulate(scene, supervisor, trace);
+  const FaultVerdict verdict =
+      judge_fault_run(scene.golden, emulated, supervisor, crosses(scene, emulated));
+  nlohmann::ordered_json record;
+  record["run"] = run;
+  record["world_seed"] = scene.world_seed;
+  record["fault"] = {{"kind", overswitch::to_string(d.fault.kind)},
+                     {"module", d.fault.module},
+                     {"at_s", emu::to_seconds(d.fault.offset)},
+                     {"spec", overswitch::describe(d.fault)}};
+  record.update(verdict_json(verdict));
+  return record;
+}
+
+} // namespace marsokhod::apps

@@ -1,0 +1,67 @@
+// CampaignRunner: the scenes and fault-free runs of a campaign, and any run k drawn from the
+// campaign's seed and k alone.
+#pragma once
+
+#include "fault_verdict.hpp"
+
+#include "marsokhod/emulator/trace/trace_sink.hpp"
+#include "marsokhod/nav/terrain/elevation.hpp"
+#include "marsokhod/occam_port/navigation/placement.hpp"
+#include "marsokhod/overswitch/campaign_file.hpp"
+#include "marsokhod/world/scene/scene.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace marsokhod::apps {
+
+/// One world seed of the campaign: its scene, ground truth and fault-free run.
+struct CampaignScene {
+  std::uint64_t world_seed = 0;
+  world::SceneDescription description;
+  world::RenderedFrame frame;
+  std::unique_ptr<imaging::StereoRig> rig;
+  nav::TerrainPoints truth_terrain;
+  GoldenRun golden;
+};
+
+/// What run k is: its scenario and its fault.
+struct CampaignDraw {
+  std::uint64_t run = 0;
+  std::size_t scene = 0;
+  overswitch::Fault fault;
+};
+
+class CampaignRunner {
+public:
+  /// Renders every scenario and runs it fault-free; `progress` (may be empty) is told each
+  /// scene done. CommandError when a fault-free cycle does not finish or a module of the mix is
+  /// no module of the overswitch.
+  CampaignRunner(const overswitch::CampaignSpec& spec, const emulator::PlatformSpec& platform,
+                 const occam_port::Placement& placement,
+                 const std::function<void(std::size_t done)>& progress);
+
+  const std::vector<std::unique_ptr<CampaignScene>>& scenes() const { return scenes_; }
+  CampaignDraw draw(std::uint64_t run) const;
+  /// Runs run k and returns its record (one line of runs.jsonl); with `trace`, its trace.
+  nlohmann::ordered_json run(std::uint64_t run, emulator::TraceSink* trace) const;
+
+private:
+  occam_port::CycleEmulation emulate(const CampaignScene& scene,
+                                     overswitch::FailoverSupervisor& supervisor,
+                                     emulator::TraceSink* trace) const;
+  bool crosses(const CampaignScene& scene, const occam_port::CycleEmulation& run) const;
+
+  const overswitch::CampaignSpec* spec_;
+  const emulator::PlatformSpec* platform_;
+  const occam_port::Placement* placement_;
+  std::vector<std::unique_ptr<CampaignScene>> scenes_;
+  double total_weight_ = 0.0;
+};
+
+} // namespace marsokhod::apps

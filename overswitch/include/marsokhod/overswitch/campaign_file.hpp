@@ -1,0 +1,68 @@
+// Campaign files: the platform, scenarios, fault mix and stopping rule of a fault-injection
+// campaign (docs/faults.md, "Campaign files").
+#pragma once
+
+#include "marsokhod/overswitch/fault.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace marsokhod::overswitch {
+
+/// A campaign file is wrong: "FILE:LINE: 'KEY': problem", like a platform file's errors.
+class CampaignError : public std::runtime_error {
+public:
+  CampaignError(std::string file, int line, std::string key, const std::string& problem);
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  const std::string& key() const { return key_; }
+
+private:
+  std::string file_;
+  int line_;
+  std::string key_;
+};
+
+/// One kind of fault in the mix: how often it is drawn, where and when it strikes.
+struct FaultMix {
+  Fault::Kind kind = Fault::Kind::hang;
+  double weight = 1.0;
+  /// Modules drawn from, uniformly; empty: the modules the platform powers at the start.
+  std::vector<std::string> modules;
+  /// The strike time is uniform over this share of the fault-free cycle, from its start.
+  double from_share = 0.0;
+  double to_share = 1.0;
+  int line = 0;
+};
+
+/// A whole campaign. Run k draws its scenario and fault from (seed, k) alone, so that any run
+/// can be replayed without the others.
+struct CampaignSpec {
+  std::string source;
+  std::string name;
+  std::string description;
+  /// A shipped platform's name or a file, relative to the campaign file's folder.
+  std::string platform;
+  std::uint64_t seed = 1;
+  std::vector<std::uint64_t> world_seeds;
+  std::string light = "high-sun";
+  double rock_cover = 0.10;
+  std::vector<FaultMix> faults;
+  std::uint64_t runs = 0;
+  /// Stop before `runs` once the unsafe rate's 95 % interval is narrower than this.
+  std::optional<double> ci_width;
+};
+
+/// Reads and checks a campaign file: every key known and of its type and range. Throws
+/// CampaignError naming the file, line and key (io::InputError for an unreadable file or bad
+/// TOML).
+CampaignSpec load_campaign(const std::filesystem::path& file);
+
+/// The most runs a campaign may ask for.
+inline constexpr std::uint64_t kMaxCampaignRuns = 10'000'000;
+
+} // namespace marsokhod::overswitch

@@ -1,0 +1,140 @@
+// `marsokhod campaign`: hang and power faults over 1,000 runs all recovered to the fault-free
+// path, records independent of the number of jobs, a replay byte-identical to its record, and
+// bad campaign files refused naming file, line and key.
+
+#include "support/run_marsokhod.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using marsokhod::testing::fresh_folder;
+using marsokhod::testing::quoted;
+using marsokhod::testing::run_marsokhod;
+using marsokhod::testing::slurp;
+
+const fs::path kCampaigns = fs::path(MARSOKHOD_SOURCE_DIR) / "campaigns";
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+TEST(CampaignCommand, ThousandHangsAndPowerLossesAreAllDetectedAndRecovered) {
+  const fs::path out = fresh_folder("campaign", "thousand");
+  const auto result = run_marsokhod("campaign " + quoted(kCampaigns / "hang-power.toml") +
+                                    " --runs 1000 --jobs 2 --json --out " + quoted(out));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json summary = nlohmann::json::parse(result.out);
+  EXPECT_EQ(summary["runs"], 1000);
+  EXPECT_EQ(summary["outcomes"].size(), 1U) << summary["outcomes"].dump();
+  EXPECT_EQ(summary["outcomes"]["recovered"], 1000);
+  EXPECT_EQ(summary["detected_fraction"], 1.0);
+  EXPECT_EQ(summary["path_equals_golden_runs"], 1000);
+  EXPECT_EQ(summary["telemetry_lost_runs"], 0);
+  EXPECT_EQ(summary["wheels_commanded_while_failed_runs"], 0);
+  EXPECT_EQ(summary["unsafe_rate"], 0.0);
+  // Detection: after the last kick (at most a period, 100 ms, before the fault) the timeout,
+  // 200 ms: between 100 and 200 ms after the fault, plus the kick's few microseconds.
+  EXPECT_GE(summary["detection_latency_s"]["min"].get<double>(), 0.1);
+  EXPECT_LE(summary["detection_latency_s"]["max"].get<double>(), 0.200004);
+  EXPECT_EQ(lines_of(slurp(out / "runs.jsonl")).size(), 1000U);
+  for (const char* file : {"summary.json", "summary.md", "outcomes.png", "latency.png"})
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+}
+
+TEST(CampaignCommand, RecordsDoNotDependOnTheJobsAndReplayRepeatsOneExactly) {
+  const fs::path one = fresh_folder("campaign", "one-job");
+  const fs::path two = fresh_folder("campaign", "two-jobs");
+  const std::string file = quoted(kCampaigns / "hang-power.toml");
+  ASSERT_EQ(
+      run_marsokhod("campaign " + file + " --runs 40 --jobs 1 --out " + quoted(one)).exit_code, 0);
+  ASSERT_EQ(
+      run_marsokhod("campaign " + file + " --runs 40 --jobs 2 --out " + quoted(two)).exit_code, 0);
+  const std::string records = slurp(one / "runs.jsonl");
+  EXPECT_EQ(records, slurp(two / "runs.jsonl"));
+  const fs::path replayed = fresh_folder("campaign", "replay");
+  const auto result =
+      run_marsokhod("campaign " + file + " --replay 17 --json --out " + quoted(replayed));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.out, lines_of(records).at(17) + "\n");
+  EXPECT_EQ(slurp(replayed / "run-17.json"), lines_of(records).at(17) + "\n");
+  const fs::path again = fresh_folder("campaign", "replay-again");
+  ASSERT_EQ(run_marsokhod("campaign " + file + " --replay 17 --out " + quoted(again)).exit_code, 0);
+  const std::string trace = slurp(replayed / "run-17.trace.json");
+  EXPECT_GT(trace.size(), 1000U);
+  EXPECT_EQ(trace, slurp(again / "run-17.trace.json"));
+}
+
+TEST(CampaignCommand, SeedsOptionReplacesTheFilesWorldSeeds) {
+  const fs::path out = fresh_folder("campaign", "seeds");
+  const auto result = run_marsokhod("campaign " + quoted(kCampaigns / "hang-power.toml") +
+                                    " --runs 20 --seeds 3..4 --out " + quoted(out));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  for (const std::string& line : lines_of(slurp(out / "runs.jsonl"))) {
+    const auto seed = nlohmann::json::parse(line)["world_seed"].get<int>();
+    EXPECT_TRUE(seed == 3 || seed == 4) << line;
+  }
+  EXPECT_EQ(run_marsokhod("campaign " + quoted(kCampaigns / "hang-power.toml") +
+                          " --seeds 4..3 --out " + quoted(out))
+                .exit_code,
+            2);
+}
+
+struct BadFile {
+  std::string name;
+  std::string text;
+  int line; ///< 0: a problem of the whole file, said without a line
+  std::string key;
+  std::string problem;
+};
+
+TEST(CampaignCommand, BadCampaignFilesNameFileLineAndKey) {
+  const std::string head = "[campaign]\nname = \"x\"\nplatform = \"onboard\"\n"
+                           "[scenarios]\nworld_seeds = [2]\n";
+  const std::string fault = "[[fault]]\nkind = \"hang\"\n";
+  const std::vector<BadFile> cases = {
+      {"no-platform", "[campaign]\nname = \"x\"\n[scenarios]\nworld_seeds = [2]\n", 1, "platform",
+       "name the platform"},
+      {"unknown-key", "[campaign]\nname = \"x\"\nplatform = \"onboard\"\nspeed = 3\n", 4, "speed",
+       "is not a key of [campaign]"},
+      {"bad-kind", head + "[[fault]]\nkind = \"melt\"\n", 7, "kind", "no fault kind"},
+      {"bad-weight", head + fault + "weight = -1\n", 8, "weight", "is not between"},
+      {"bad-module", head + fault + "modules = [\"module7\"]\n", 6, "modules",
+       "no module of onboard"},
+      {"bad-runs", head + fault + "[stop]\nruns = 0\n", 9, "runs", "is not between"},
+      {"bad-light",
+       "[campaign]\nplatform = \"onboard\"\n[scenarios]\nworld_seeds = [2]\n"
+       "light = \"disco\"\n",
+       5, "light", "no light"},
+      {"bad-share", head + fault + "from_share = 0.5\nto_share = 0.2\n", 9, "to_share",
+       "more than from_share"},
+      {"no-fault", head, 0, "fault", "at least one [[fault]]"},
+  };
+  const fs::path dir = fresh_folder("campaign", "bad");
+  for (const BadFile& c : cases) {
+    const fs::path file = dir / (c.name + ".toml");
+    std::ofstream(file) << c.text;
+    const auto result =
+        run_marsokhod("campaign " + quoted(file) + " --runs 1 --out " + quoted(dir / "out"));
+    EXPECT_EQ(result.exit_code, 1) << c.name << ": " << result.err;
+    const std::string place =
+        c.line > 0 ? file.string() + ":" + std::to_string(c.line) + ": '" + c.key + "'"
+                   : "'" + c.key + "'";
+    EXPECT_NE(result.err.find(place), std::string::npos) << c.name << ": " << result.err;
+    EXPECT_NE(result.err.find(c.problem), std::string::npos) << c.name << ": " << result.err;
+  }
+}
+
+} // namespace
