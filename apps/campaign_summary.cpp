@@ -56,8 +56,7 @@ CampaignTally tally(const std::vector<nlohmann::json>& records) {
     else
       ++t.judged;
     t.unsafe += outcome == "unsafe" ? 1 : 0;
-    if (r.at("emulated_s").get<double>() >= r.at("fault").at("at_s").get<double>())
-      ++t.injected;
+    t.activated += r.at("activated").get<bool>() ? 1 : 0;
     if (r.at("detected").get<bool>()) {
       ++t.detected;
       t.detection_latency_s.push_back(r.at("detection_latency_s").get<double>());
@@ -87,7 +86,8 @@ nlohmann::ordered_json summary_json(const overswitch::CampaignSpec& spec, const 
   j["unsafe_rate"] = fraction(t.unsafe, t.judged);
   const Interval ci = wilson_95(t.unsafe, t.judged);
   j["unsafe_ci95"] = {ci.low, ci.high};
-  j["detected_fraction"] = fraction(t.detected, t.injected);
+  j["activated_runs"] = t.activated;
+  j["detected_fraction"] = fraction(t.detected, t.activated);
   j["path_equals_golden_runs"] = t.path_equals_golden;
   j["telemetry_lost_runs"] = t.telemetry_lost;
   j["wheels_commanded_while_failed_runs"] = t.wheels_commanded_while_failed;
@@ -115,8 +115,8 @@ std::string summary_markdown(const overswitch::CampaignSpec& spec, const Campaig
   const Interval ci = wilson_95(t.unsafe, t.judged);
   md += fmt::format("- unsafe: {} of {} = {:.4f} (95 % Wilson interval {:.4f}..{:.4f})\n", t.unsafe,
                     t.judged, fraction(t.unsafe, t.judged), ci.low, ci.high);
-  md += fmt::format("- detected: {} of {} runs whose fault struck during the cycle ({:.1f} %)\n",
-                    t.detected, t.injected, 100.0 * fraction(t.detected, t.injected));
+  md += fmt::format("- detected: {} of {} runs whose fault stopped a module ({:.1f} %)\n",
+                    t.detected, t.activated, 100.0 * fraction(t.detected, t.activated));
   md += fmt::format("- the fault-free path in {} runs; telemetry lost in {}; wheels commanded by a "
                     "failed module in {}\n\n",
                     t.path_equals_golden, t.telemetry_lost, t.wheels_commanded_while_failed);

@@ -27,7 +27,7 @@ struct CampaignTally {
   std::uint64_t golden_unsafe_runs = 0;
   std::uint64_t judged = 0; ///< the others: what the unsafe rate is over
   std::uint64_t unsafe = 0;
-  std::uint64_t injected = 0; ///< runs whose fault struck before the cycle ended
+  std::uint64_t activated = 0; ///< runs whose fault stopped a module (FaultVerdict::activated)
   std::uint64_t detected = 0;
   std::map<std::string, std::uint64_t> outcomes;
   std::map<std::string, std::map<std::string, std::uint64_t>> by_kind;

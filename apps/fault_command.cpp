@@ -101,6 +101,9 @@ void print_verdict(const FaultVerdict& v, const overswitch::FailoverSupervisor& 
              v.reason.empty() ? "" : " (" + v.reason + ")");
   for (const overswitch::InjectedFault& f : supervisor.injected())
     fmt::print("  {:9.6f} s  fault {}\n", emu::to_seconds(f.at), overswitch::describe(f.fault));
+  for (const HaltFigure& h : v.halts)
+    fmt::print("  {:9.6f} s  {} halted on a memory fault: {} asking for {}\n", h.time_s, h.module,
+               h.process, h.what);
   for (const overswitch::OverswitchEvent& e : supervisor.overswitch().events())
     fmt::print("  {:9.6f} s  overswitch: {} {}{}\n", emu::to_seconds(e.time),
                overswitch::to_string(e.kind), e.module, e.detail.empty() ? "" : ": " + e.detail);
@@ -188,7 +191,8 @@ Command make_fault_command(CLI::App& parent) {
       ->capture_default_str()
       ->transform(integer_between<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()));
   app->add_option("--inject", cli->inject,
-                  "A fault, KIND:MODULE@WHEN, repeatable: KIND hang or power; WHEN a time from "
+                  "A fault, KIND:MODULE@WHEN, repeatable: KIND hang, power or leak (memory "
+                  "exhaustion); WHEN a time from "
                   "the cycle's start (1.05s, 250ms) or a stage and an offset (matching+0.5s)")
       ->required();
   app->add_option("--trace", cli->trace, "Write a Chrome trace (Perfetto) of the faulty run here");

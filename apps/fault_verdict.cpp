@@ -23,19 +23,32 @@ bool telemetry_delivered(const occam_port::CycleEmulation& golden,
                     run.telemetry.end() - static_cast<std::ptrdiff_t>(golden.telemetry.size()));
 }
 
-// An upload from a module after a fault struck it: a failed module commanding the wheels.
+/// When each module stopped working: a hang or power loss when it struck, a leak when the
+/// module halted on it.
+std::vector<std::pair<std::string, emu::Tick>>
+failures(const occam_port::CycleEmulation& run, const overswitch::FailoverSupervisor& supervisor) {
+  std::vector<std::pair<std::string, emu::Tick>> failed;
+  for (const overswitch::InjectedFault& fault : supervisor.injected())
+    if (fault.fault.kind != overswitch::Fault::Kind::leak)
+      failed.emplace_back(fault.fault.module, fault.at);
+  for (const occam_port::MemoryFaultFigures& halt : run.halts)
+    failed.emplace_back(halt.node, halt.time);
+  return failed;
+}
+
+// An upload from a module after it stopped working: a failed module commanding the wheels.
 bool failed_module_uploaded(const occam_port::CycleEmulation& run,
                             const overswitch::FailoverSupervisor& supervisor) {
-  for (const overswitch::InjectedFault& fault : supervisor.injected())
+  for (const auto& [module, since] : failures(run, supervisor))
     for (const occam_port::DeviceUpload& upload : run.uploads)
-      if (upload.node == fault.fault.module && upload.time >= fault.at)
+      if (upload.node == module && upload.time >= since)
         return true;
   return false;
 }
 
 Outcome classify(const FaultVerdict& v, const occam_port::CycleEmulation& run,
                  const overswitch::FailoverSupervisor& supervisor) {
-  if (supervisor.error() || run.memory_fault)
+  if (supervisor.error() || (run.memory_fault && !run.finished))
     return Outcome::error;
   if (run.abandoned)
     return Outcome::safe_stop;
@@ -89,6 +102,7 @@ FaultVerdict judge_fault_run(const GoldenRun& golden, const occam_port::CycleEmu
   FaultVerdict v;
   const auto& failovers = supervisor.overswitch().failovers();
   v.detected = !failovers.empty();
+  v.activated = !failures(run, supervisor).empty();
   for (const overswitch::Failover& f : failovers) {
     const emu::Tick powered = f.detected;
     v.failovers.push_back({f.failed, f.spare, f.ok ? emu::to_seconds(f.booted - powered) : 0.0});
@@ -100,6 +114,8 @@ FaultVerdict judge_fault_run(const GoldenRun& golden, const occam_port::CycleEmu
                                   [](const overswitch::Failover& f) { return f.ok; });
   if (whole != failovers.end())
     v.recovery_s = emu::to_seconds(whole->booted - failovers.front().detected);
+  for (const occam_port::MemoryFaultFigures& h : run.halts)
+    v.halts.push_back({h.node, h.process, h.what, emu::to_seconds(h.time)});
   v.path_equals_golden = run.finished && same_path(golden.run, run);
   v.golden_unsafe = golden.unsafe;
   v.unsafe = run.finished && crosses_obstacle;
@@ -117,6 +133,7 @@ nlohmann::ordered_json verdict_json(const FaultVerdict& v) {
   j["outcome"] = to_string(v.outcome);
   if (!v.reason.empty())
     j["reason"] = v.reason;
+  j["activated"] = v.activated;
   j["detected"] = v.detected;
   j["detection_latency_s"] = v.detection_latency_s ? nlohmann::ordered_json(*v.detection_latency_s)
                                                    : nlohmann::ordered_json(nullptr);
@@ -128,6 +145,12 @@ nlohmann::ordered_json verdict_json(const FaultVerdict& v) {
                               {"spare", f.spare.empty() ? nlohmann::ordered_json(nullptr)
                                                         : nlohmann::ordered_json(f.spare)},
                               {"boot_s", f.boot_s}});
+  if (!v.halts.empty()) {
+    j["halts"] = nlohmann::ordered_json::array();
+    for (const HaltFigure& h : v.halts)
+      j["halts"].push_back(
+          {{"module", h.module}, {"process", h.process}, {"what", h.what}, {"time_s", h.time_s}});
+  }
   j["path_equals_golden"] = v.path_equals_golden;
   j["unsafe"] = v.unsafe;
   j["golden_unsafe"] = v.golden_unsafe;

@@ -33,13 +33,24 @@ struct FailoverFigure {
   double boot_s = 0.0; ///< from the spare's power-on to it running; 0 when it never ran
 };
 
+/// A module halted on a memory fault (HaltOnError): where and when.
+struct HaltFigure {
+  std::string module;
+  std::string process;
+  std::string what;
+  double time_s = 0.0;
+};
+
 struct FaultVerdict {
   Outcome outcome = Outcome::error;
   std::string reason; ///< why an error or a hang; empty otherwise
+  /// The fault stopped a module: a hang or power loss struck, or a leak made it halt.
+  bool activated = false;
   bool detected = false;
   std::optional<double> detection_latency_s; ///< from the first fault to the first watchdog expiry
   std::optional<double> recovery_s;          ///< from that expiry to the pair being whole again
   std::vector<FailoverFigure> failovers;
+  std::vector<HaltFigure> halts;
   bool path_equals_golden = false;
   bool unsafe = false;
   bool golden_unsafe = false;

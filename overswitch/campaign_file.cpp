@@ -145,8 +145,11 @@ FaultMix read_fault(Table& fault) {
     mix.kind = Fault::Kind::hang;
   else if (kind == "power")
     mix.kind = Fault::Kind::power_loss;
+  else if (kind == "leak")
+    mix.kind = Fault::Kind::leak;
   else
-    fault.fail("kind", fmt::format("'{}' is no fault kind of a campaign (hang, power)", kind));
+    fault.fail("kind",
+               fmt::format("'{}' is no fault kind of a campaign (hang, power, leak)", kind));
   mix.weight = fault.real("weight", 1e-9, 1e9).value_or(1.0);
   if (const toml::array* modules = fault.array("modules"))
     for (const toml::node& module : *modules) {

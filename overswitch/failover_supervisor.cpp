@@ -2,6 +2,7 @@
 
 #include "marsokhod/overswitch/failover_supervisor.hpp"
 
+#include "marsokhod/emulator/memory/memory_arena.hpp"
 #include "marsokhod/overswitch/heartbeat.hpp"
 #include "marsokhod/overswitch/link_boot.hpp"
 
@@ -102,10 +103,30 @@ void FailoverSupervisor::inject(const Fault& fault) {
     return;
   }
   injected_.push_back({fault, control_->kernel().now()});
-  if (fault.kind == Fault::Kind::hang)
+  switch (fault.kind) {
+  case Fault::Kind::hang:
     node->hang();
-  else
+    return;
+  case Fault::Kind::power_loss:
     node->power_off();
+    return;
+  case Fault::Kind::leak:
+    leak(*node);
+    return;
+  }
+}
+
+// The leak takes the largest free block of the memory the buffers come from, so the module's
+// next buffer of any size there fails (a halted or unpowered module leaks nothing).
+void FailoverSupervisor::leak(emulator::Node& node) {
+  if (!node.running())
+    return;
+  emulator::MemoryArena& memory = node.memory();
+  const std::size_t free = memory.largest_free_block(memory.default_placement());
+  if (free == 0)
+    return;
+  memory.allocate_block(free, emulator::MemoryArena::kWordBytes, memory.default_placement(),
+                        "leak");
 }
 
 // The spare takes the place of the oldest module that failed with a share of the program.

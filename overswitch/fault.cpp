@@ -15,8 +15,8 @@ namespace {
 
 constexpr emulator::Tick kLongestOffset = 3600 * emulator::kSecond;
 
-constexpr std::array<std::pair<std::string_view, Fault::Kind>, 2> kKinds{
-    {{"hang", Fault::Kind::hang}, {"power", Fault::Kind::power_loss}}};
+constexpr std::array<std::pair<std::string_view, Fault::Kind>, 3> kKinds{
+    {{"hang", Fault::Kind::hang}, {"power", Fault::Kind::power_loss}, {"leak", Fault::Kind::leak}}};
 
 constexpr std::array<std::pair<std::string_view, emulator::Tick>, 3> kUnits{
     {{"ms", emulator::kMillisecond}, {"us", emulator::kMicrosecond}, {"s", emulator::kSecond}}};
@@ -29,7 +29,7 @@ Fault::Kind kind_of(std::string_view spec, std::string_view text) {
   for (const auto& [name, kind] : kKinds)
     if (text == name)
       return kind;
-  fail(spec, fmt::format("unknown fault kind '{}' (known: hang, power)", text));
+  fail(spec, fmt::format("unknown fault kind '{}' (known: hang, power, leak)", text));
 }
 
 emulator::Tick duration_of(std::string_view spec, std::string_view text) {
@@ -66,6 +66,8 @@ const char* to_string(Fault::Kind kind) {
     return "hang";
   case Fault::Kind::power_loss:
     return "power";
+  case Fault::Kind::leak:
+    return "leak";
   }
   return "?";
 }

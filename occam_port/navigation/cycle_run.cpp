@@ -24,8 +24,13 @@ void record_fault(CycleState& cycle, emulator::Node& node, const emulator::Memor
                   const std::string& what) {
   if (cycle.fault)
     return;
-  cycle.fault = MemoryFaultFigures{node.name(), fault.process(),    fault.requested_bytes(),
-                                   what,        fault.free_bytes(), fault.largest_free_block()};
+  cycle.fault = MemoryFaultFigures{node.name(),
+                                   fault.process(),
+                                   fault.requested_bytes(),
+                                   what,
+                                   fault.free_bytes(),
+                                   fault.largest_free_block(),
+                                   node.kernel().now()};
 }
 
 /// Keeps a process in its run's list of live ones until its body ends, killed or not; tells
@@ -128,7 +133,10 @@ void CycleRun::spawn_processes() {
         context.end_stage();
       } catch (const emulator::MemoryFault& fault) {
         record_fault(cycle, node, fault, context.what());
-        cycle.kernel->stop();
+        if (setup_->supervisor == nullptr)
+          cycle.kernel->stop();
+        else
+          halt(node, cycle);
       } catch (const std::exception& error) {
         if (!cycle.error)
           cycle.error = fmt::format("process {} on {}: {}", name, node.name(), error.what());
@@ -150,6 +158,15 @@ void CycleRun::spawn_processes() {
       return;
     }
   }
+}
+
+// HaltOnError: the module stops at once (from an event: a node cannot hang itself from one of
+// its processes); this run cannot finish, and the fault is kept with the halts.
+void CycleRun::halt(emulator::Node& node, CycleState& cycle) {
+  cycle.killed = true;
+  halts_.push_back(*cycle.fault);
+  cycle.fault.reset();
+  net_.kernel.schedule_after(0, emulator::event_priority::power, [&node] { node.hang(); });
 }
 
 // The program ends when its last process does.

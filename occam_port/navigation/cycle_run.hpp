@@ -33,6 +33,7 @@ public:
   CycleState& state() { return *states_.back(); }
   const Placement& placement() const { return placement_; }
   int restarts() const { return restarts_; }
+  const std::vector<MemoryFaultFigures>& halts() const { return halts_; }
   bool finished() const { return finished_; }
   const std::optional<std::string>& abandoned() const { return abandoned_; }
 
@@ -58,6 +59,7 @@ private:
   void kill_program();
   void reset_device_link(const std::string& node);
   void process_ended();
+  void halt(emulator::Node& node, CycleState& cycle);
 
   const CycleInput* input_;
   const CycleSetup* setup_;
@@ -71,6 +73,7 @@ private:
   bool finished_ = false;
   bool killing_ = false;
   emulator::Tick finished_at_ = 0;
+  std::vector<MemoryFaultFigures> halts_;
   std::optional<std::string> abandoned_;
   CycleNetwork net_; // last: its nodes, and the processes on them, go first
 };

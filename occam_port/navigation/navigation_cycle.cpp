@@ -112,6 +112,7 @@ CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetu
   out.telemetry = std::move(net.telemetry);
   out.uploads = std::move(net.uploads);
   out.restarts = run.restarts();
+  out.halts = run.halts();
   out.finished = run.finished();
   out.abandoned = run.abandoned();
   out.context_switches = net.kernel.context_switches();

@@ -208,5 +208,26 @@ TEST_F(FailoverTest, SpareThatDoesNotBootIsFailedAfterItsAllowanceAndTheNextOneT
   EXPECT_TRUE(same_path(run, golden()));
 }
 
+TEST_F(FailoverTest, LeakHaltsTheModuleAtItsNextBufferAndItsWatchdogFailsItOver) {
+  FailoverSupervisor* supervisor = nullptr;
+  const CycleEmulation run =
+      emulate({Fault{Fault::Kind::leak, "module1", "zones", 100 * kMs}}, supervisor);
+  // The leak takes module1's free memory; the next buffer there fails and the module halts
+  // (HaltOnError); its heartbeat stops with it.
+  ASSERT_EQ(run.halts.size(), 1U);
+  EXPECT_EQ(run.halts[0].node, "module1");
+  EXPECT_GE(run.halts[0].time, supervisor->injected().at(0).at);
+  ASSERT_EQ(supervisor->overswitch().failovers().size(), 1U);
+  const Failover& failover = supervisor->overswitch().failovers()[0];
+  const Tick halted = run.halts[0].time;
+  const Tick last_kick = halted / (100 * kMs) * (100 * kMs);
+  EXPECT_GE(failover.detected, last_kick + 200 * kMs);
+  EXPECT_LE(failover.detected, last_kick + 200 * kMs + kKickLatency);
+  EXPECT_EQ(failover.spare, "module2");
+  ASSERT_TRUE(run.finished);
+  EXPECT_FALSE(run.memory_fault);
+  EXPECT_TRUE(same_path(run, golden()));
+}
+
 } // namespace
 } // namespace marsokhod::overswitch

@@ -47,6 +47,7 @@ public:
 private:
   void schedule(const Fault& fault, emulator::Tick at);
   void inject(const Fault& fault);
+  void leak(emulator::Node& node);
   void boot(emulator::Node& spare, emulator::Node& from, std::function<void()> done);
   void booted(const Failover& failover);
   void wind_down();

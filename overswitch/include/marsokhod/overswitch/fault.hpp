@@ -15,6 +15,7 @@ struct Fault {
   enum class Kind : std::uint8_t {
     hang,       ///< the CPU stops for good and the links stop acknowledging; still powered
     power_loss, ///< the module loses its power
+    leak,       ///< memory exhaustion: a leak takes every free byte where the module's buffers go
   };
   Kind kind = Kind::hang;
   std::string module;
@@ -32,7 +33,7 @@ public:
   using std::invalid_argument::invalid_argument;
 };
 
-/// Reads "KIND:MODULE@WHEN": KIND is hang or power; WHEN is a time from the cycle's start
+/// Reads "KIND:MODULE@WHEN": KIND is hang, power or leak; WHEN is a time from the cycle's start
 /// ("1.05s", "250ms", "900us") or a stage of the program and an offset after its start
 /// ("matching+0.5s", "zones"). Checks the grammar and the ranges (0 to an hour), not that the
 /// module and stage exist (the run does). Throws FaultSpecError.

@@ -91,6 +91,7 @@ struct MemoryFaultFigures {
   std::string what; ///< "disparity, 128 rows x 128 px x 4 B"
   std::size_t free_bytes = 0;
   std::size_t largest_free_block = 0;
+  emulator::Tick time = 0; ///< when the request failed
 };
 
 /// Everything one emulated cycle produced and measured.
@@ -105,6 +106,9 @@ struct CycleEmulation {
   std::vector<LinkFigures> links;
   MemoryPlan plan;
   std::optional<MemoryFaultFigures> memory_fault;
+  /// Under a supervisor a memory fault does not end the run: the module halts, as a T805 with
+  /// HaltOnError set does on an error, and its watchdog takes over. Each such halt, in order.
+  std::vector<MemoryFaultFigures> halts;
   /// The cycle's products, read out of the nodes' memories as a debugger would (not charged);
   /// absent after a memory fault.
   std::optional<nav::NavigationResult> result;
