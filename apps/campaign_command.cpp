@@ -128,6 +128,7 @@ std::vector<std::string> run_campaign(const CampaignCli& cli, const overswitch::
   ProgressBar bar(runs, !cli.json);
   std::vector<std::string> records;
   std::uint64_t unsafe = 0;
+  std::uint64_t judged = 0;
   while (records.size() < runs) {
     const std::uint64_t first = records.size();
     const std::uint64_t last = spec.ci_width ? std::min(runs, first + kBatch) : runs;
@@ -137,9 +138,10 @@ std::vector<std::string> run_campaign(const CampaignCli& cli, const overswitch::
     for (const std::string& line : batch) {
       const nlohmann::json record = nlohmann::json::parse(line);
       unsafe += record.at("outcome") == "unsafe" ? 1 : 0;
+      judged += record.at("golden_unsafe").get<bool>() ? 0 : 1;
       records.push_back(line);
     }
-    const Interval ci = wilson_95(unsafe, records.size());
+    const Interval ci = wilson_95(unsafe, judged);
     if (spec.ci_width && ci.high - ci.low <= *spec.ci_width)
       break;
   }

@@ -1,7 +1,8 @@
 #!/bin/sh
 # The main job of `make run`: renders the default synthetic Mars scene with its ground truth,
 # runs one navigation cycle on the rendered pair, then the same cycle at 128 x 128 as OCCAM
-# processes on the emulated PC transputer card and on the rover's onboard computer.
+# processes on the emulated PC transputer card and on the rover's onboard computer, the paper's
+# timings from the model, and a campaign of module hangs and power losses under the overswitch.
 set -eu
 marsokhod="$1"
 out="$2"
@@ -10,6 +11,7 @@ nav_dir="$out/nav-seed3"
 emulate_dir="$out/emulate-pc-card-seed3"
 onboard_dir="$out/emulate-onboard-seed3"
 reproduce_dir="$out/reproduce"
+campaign_dir="$out/campaign-hang-power"
 
 "$marsokhod" world --seed 3 --size 256 --out "$world_dir"
 echo
@@ -24,7 +26,10 @@ echo
 echo
 "$marsokhod" reproduce --out "$reproduce_dir"
 echo
-echo "make run: results are in $world_dir, $nav_dir, $emulate_dir, $onboard_dir and $reproduce_dir"
+"$marsokhod" campaign campaigns/hang-power.toml --jobs 2 --out "$campaign_dir"
+echo
+echo "make run: results are in $world_dir, $nav_dir, $emulate_dir, $onboard_dir, $reproduce_dir"
+echo "and $campaign_dir"
 echo "  $world_dir:"
 echo "    left.png / right.png              the rendered stereo pair"
 echo "    gt_disparity.png, gt_range.png    ground truth, false colour with a legend"
@@ -44,3 +49,8 @@ echo "    worked out again where the memory cannot keep them), with its trace.js
 echo "  $reproduce_dir:"
 echo "    reproduce.md / .json / .png       the paper's 8 s, 10 s and 1.3 min beside the model's"
 echo "    sweep.png / .csv / .json          the onboard cycle against each module's memory"
+echo "  $campaign_dir:"
+echo "    summary.md / .json                1,000 module hangs and power losses onboard: outcomes,"
+echo "                                      detection, failover to a spare, the unsafe rate"
+echo "    outcomes.png, latency.png         outcomes by fault kind, detection latency"
+echo "    runs.jsonl                        one record per run; campaign --replay K repeats one"
