@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -42,6 +43,38 @@ TEST(FaultCommand, FaultsOnBothModulesAtOnceEndInASafeStop) {
   EXPECT_EQ(j["outcome"], "safe_stop");
   EXPECT_TRUE(j["telemetry_lost"].get<bool>());
   EXPECT_FALSE(j["path_equals_golden"].get<bool>());
+}
+
+TEST(FaultCommand, TraceShowsTheOverswitchAndTheSparesBoot) {
+  const std::filesystem::path trace =
+      marsokhod::testing::fresh_folder("fault", "trace") / "trace.json";
+  const auto result = run_marsokhod("fault --platform onboard --seed 2 --inject hang:module1@1s "
+                                    "--trace " +
+                                    marsokhod::testing::quoted(trace));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json events = nlohmann::json::parse(marsokhod::testing::slurp(trace));
+  bool expired = false;
+  bool boot = false;
+  for (const auto& e : events["traceEvents"]) {
+    const std::string name = e.value("name", "");
+    expired = expired || name == "watchdog expired: module1";
+    boot = boot || name == "boot module2";
+  }
+  EXPECT_TRUE(expired) << "no watchdog expiry in the trace";
+  EXPECT_TRUE(boot) << "no boot process in the trace";
+}
+
+TEST(FaultCommand, HangAfterTheCycleEndedIsMaskedAndStoppedNothing) {
+  // Seed 2's onboard cycle ends near 22.5 s emulated: a hang at 100 s comes after it.
+  const auto result =
+      run_marsokhod("fault --platform onboard --seed 2 --inject hang:module1@100s --json");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json j = nlohmann::json::parse(result.out);
+  EXPECT_EQ(j["outcome"], "masked");
+  EXPECT_FALSE(j["activated"].get<bool>());
+  EXPECT_FALSE(j["detected"].get<bool>());
+  EXPECT_TRUE(j["path_equals_golden"].get<bool>());
+  EXPECT_LT(j["emulated_s"].get<double>(), 100.0);
 }
 
 TEST(FaultCommand, BadSpecsAreRefusedNamingTheSpecAndTheProblem) {
