@@ -62,6 +62,48 @@ void check_modules(const overswitch::CampaignSpec& spec, const emu::PlatformSpec
 
 } // namespace
 
+std::unique_ptr<CampaignScene> supervised_scene(std::uint64_t seed, const SceneChanges& changes,
+                                                const emu::PlatformSpec& platform,
+                                                const occam_port::Placement& placement) {
+  auto scene = std::make_unique<CampaignScene>();
+  scene->world_seed = seed;
+  scene->description = world::default_scene(seed, 128);
+  if (changes.light)
+    scene->description.lighting = world::lighting_preset(world::parse_light_preset(*changes.light));
+  if (changes.rock_cover)
+    scene->description.terrain.rock_cover = *changes.rock_cover;
+  scene->frame = world::render_site(scene->description);
+  scene->rig = std::make_unique<imaging::StereoRig>(scene->description.rig);
+  scene->truth_terrain = nav::reconstruct_terrain(scene->frame.truth.disparity, *scene->rig,
+                                                  scene->description.placement.attitude);
+  overswitch::FailoverSupervisor fault_free(platform, {});
+  scene->golden.run = emulate_supervised(*scene, platform, placement, fault_free, nullptr);
+  if (!scene->golden.run.finished)
+    throw CommandError(fmt::format("world seed {}: the fault-free cycle did not finish: {}", seed,
+                                   scene->golden.run.abandoned.value_or("no reason given")));
+  scene->golden.unsafe = crosses_obstacle(*scene, scene->golden.run);
+  return scene;
+}
+
+occam_port::CycleEmulation emulate_supervised(const CampaignScene& scene,
+                                              const emu::PlatformSpec& platform,
+                                              const occam_port::Placement& placement,
+                                              overswitch::FailoverSupervisor& supervisor,
+                                              emu::TraceSink* trace) {
+  occam_port::CycleInput input{
+      scene.frame.images.left, scene.frame.images.right, scene.rig.get(), {}};
+  input.options.attitude = scene.description.placement.attitude;
+  const occam_port::CycleSetup setup{
+      &platform,   &placement, std::nullopt, trace, occam_port::kOccamStyleFactor,
+      &supervisor, kTimeLimit};
+  return occam_port::emulate_navigation_cycle(input, setup);
+}
+
+bool crosses_obstacle(const CampaignScene& scene, const occam_port::CycleEmulation& run) {
+  return run.result && run.result->found() &&
+         eval::crosses_obstacle(run.result->plan, scene.truth_terrain, scene.frame.truth);
+}
+
 CampaignRunner::CampaignRunner(const overswitch::CampaignSpec& spec,
                                const emu::PlatformSpec& platform,
                                const occam_port::Placement& placement,
@@ -71,42 +113,11 @@ CampaignRunner::CampaignRunner(const overswitch::CampaignSpec& spec,
   for (const overswitch::FaultMix& mix : spec.faults)
     total_weight_ += mix.weight;
   for (const std::uint64_t seed : spec.world_seeds) {
-    auto scene = std::make_unique<CampaignScene>();
-    scene->world_seed = seed;
-    scene->description = world::default_scene(seed, 128);
-    scene->description.lighting = world::lighting_preset(world::parse_light_preset(spec.light));
-    scene->description.terrain.rock_cover = spec.rock_cover;
-    scene->frame = world::render_site(scene->description);
-    scene->rig = std::make_unique<imaging::StereoRig>(scene->description.rig);
-    scene->truth_terrain = nav::reconstruct_terrain(scene->frame.truth.disparity, *scene->rig,
-                                                    scene->description.placement.attitude);
-    overswitch::FailoverSupervisor fault_free(platform, {});
-    scene->golden.run = emulate(*scene, fault_free, nullptr);
-    if (!scene->golden.run.finished)
-      throw CommandError(fmt::format("world seed {}: the fault-free cycle did not finish", seed));
-    scene->golden.unsafe = crosses(*scene, scene->golden.run);
-    scenes_.push_back(std::move(scene));
+    scenes_.push_back(
+        supervised_scene(seed, SceneChanges{spec.light, spec.rock_cover}, platform, placement));
     if (progress)
       progress(scenes_.size());
   }
-}
-
-occam_port::CycleEmulation CampaignRunner::emulate(const CampaignScene& scene,
-                                                   overswitch::FailoverSupervisor& supervisor,
-                                                   emu::TraceSink* trace) const {
-  occam_port::CycleInput input{
-      scene.frame.images.left, scene.frame.images.right, scene.rig.get(), {}};
-  input.options.attitude = scene.description.placement.attitude;
-  const occam_port::CycleSetup setup{
-      platform_,   placement_, std::nullopt, trace, occam_port::kOccamStyleFactor,
-      &supervisor, kTimeLimit};
-  return occam_port::emulate_navigation_cycle(input, setup);
-}
-
-bool CampaignRunner::crosses(const CampaignScene& scene,
-                             const occam_port::CycleEmulation& run) const {
-  return run.result && run.result->found() &&
-         eval::crosses_obstacle(run.result->plan, scene.truth_terrain, scene.frame.truth);
 }
 
 // Kind by weight, then module, then the strike time over the fault-free cycle's share.
@@ -138,9 +149,10 @@ nlohmann::ordered_json CampaignRunner::run(std::uint64_t run, emu::TraceSink* tr
   const CampaignDraw d = draw(run);
   const CampaignScene& scene = *scenes_[d.scene];
   overswitch::FailoverSupervisor supervisor(*platform_, {d.fault});
-  const occam_port::CycleEmulation emulated = emulate(scene, supervisor, trace);
+  const occam_port::CycleEmulation emulated =
+      emulate_supervised(scene, *platform_, *placement_, supervisor, trace);
   const FaultVerdict verdict =
-      judge_fault_run(scene.golden, emulated, supervisor, crosses(scene, emulated));
+      judge_fault_run(scene.golden, emulated, supervisor, crosses_obstacle(scene, emulated));
   nlohmann::ordered_json record;
   record["run"] = run;
   record["world_seed"] = scene.world_seed;

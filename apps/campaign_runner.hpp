@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,26 @@ struct CampaignScene {
   nav::TerrainPoints truth_terrain;
   GoldenRun golden;
 };
+
+/// What a campaign changes in the default site; nothing when empty.
+struct SceneChanges {
+  std::optional<std::string> light; ///< a light preset's name
+  std::optional<double> rock_cover;
+};
+
+/// World `seed` at 128x128, rendered with its ground truth, and its fault-free cycle under the
+/// overswitch; CommandError when that cycle does not finish.
+std::unique_ptr<CampaignScene> supervised_scene(std::uint64_t seed, const SceneChanges& changes,
+                                                const emulator::PlatformSpec& platform,
+                                                const occam_port::Placement& placement);
+/// The scene's cycle under `supervisor`, cut at 600 s emulated (a hang).
+occam_port::CycleEmulation emulate_supervised(const CampaignScene& scene,
+                                              const emulator::PlatformSpec& platform,
+                                              const occam_port::Placement& placement,
+                                              overswitch::FailoverSupervisor& supervisor,
+                                              emulator::TraceSink* trace);
+/// The run found a path that crosses a ground-truth obstacle of the scene.
+bool crosses_obstacle(const CampaignScene& scene, const occam_port::CycleEmulation& run);
 
 /// What run k is: its scenario and its fault.
 struct CampaignDraw {
@@ -52,11 +73,6 @@ public:
   nlohmann::ordered_json run(std::uint64_t run, emulator::TraceSink* trace) const;
 
 private:
-  occam_port::CycleEmulation emulate(const CampaignScene& scene,
-                                     overswitch::FailoverSupervisor& supervisor,
-                                     emulator::TraceSink* trace) const;
-  bool crosses(const CampaignScene& scene, const occam_port::CycleEmulation& run) const;
-
   const overswitch::CampaignSpec* spec_;
   const emulator::PlatformSpec* platform_;
   const occam_port::Placement* placement_;

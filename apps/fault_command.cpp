@@ -1,16 +1,14 @@
 // `marsokhod fault --platform FILE --inject SPEC ...`: one onboard cycle with injected faults,
 // judged against the fault-free run and the world's ground truth (docs/faults.md).
 
+#include "campaign_runner.hpp"
 #include "command.hpp"
 #include "fault_verdict.hpp"
 #include "option_checks.hpp"
 #include "platform_choice.hpp"
 #include "trace_file.hpp"
 
-#include "marsokhod/eval/terrain/terrain_scoring.hpp"
-#include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/occam_port/navigation/navigation_program.hpp"
-#include "marsokhod/world/scene/rendered_site.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -27,55 +25,12 @@ namespace {
 
 namespace emu = emulator;
 
-/// Longest a fault run may take, emulated: the onboard cycle takes about 20 s, a restart
-/// doubles it; past this, with no watchdog running out, the run counts as a hang.
-constexpr emu::Tick kTimeLimit = 600 * emu::kSecond;
-
 struct FaultCli {
   std::string platform;
   std::uint64_t seed = 1;
   std::vector<std::string> inject;
   std::optional<std::string> trace;
   bool json = false;
-};
-
-/// The rendered scene, its ground truth and what the cycle is given.
-struct Scene {
-  world::SceneDescription description;
-  world::RenderedFrame frame;
-  imaging::StereoRig rig;
-  nav::TerrainPoints truth_terrain;
-};
-
-std::unique_ptr<Scene> render(std::uint64_t seed) {
-  world::SceneDescription description = world::default_scene(seed, 128);
-  world::RenderedFrame frame = world::render_site(description);
-  const imaging::StereoRig rig(description.rig);
-  nav::TerrainPoints truth_terrain =
-      nav::reconstruct_terrain(frame.truth.disparity, rig, description.placement.attitude);
-  return std::make_unique<Scene>(
-      Scene{std::move(description), std::move(frame), rig, std::move(truth_terrain)});
-}
-
-struct Runner {
-  const emu::PlatformSpec& platform;
-  const occam_port::Placement& placement;
-  const Scene& scene;
-
-  bool crosses(const occam_port::CycleEmulation& run) const {
-    return run.result && run.result->found() &&
-           eval::crosses_obstacle(run.result->plan, scene.truth_terrain, scene.frame.truth);
-  }
-
-  occam_port::CycleEmulation run(overswitch::FailoverSupervisor& supervisor,
-                                 emu::TraceSink* trace) const {
-    occam_port::CycleInput input{scene.frame.images.left, scene.frame.images.right, &scene.rig, {}};
-    input.options.attitude = scene.description.placement.attitude;
-    occam_port::CycleSetup setup{
-        &platform,   &placement, std::nullopt, trace, occam_port::kOccamStyleFactor,
-        &supervisor, kTimeLimit};
-    return occam_port::emulate_navigation_cycle(input, setup);
-  }
 };
 
 std::vector<overswitch::Fault> parse_faults(const FaultCli& cli,
@@ -133,22 +88,17 @@ int run_fault(const FaultCli& cli) {
                                  occam_port::navigation_program_shape());
   if (!cli.json)
     fmt::print(stderr, "rendering world seed {} at 128x128...\n", cli.seed);
-  const std::unique_ptr<Scene> scene = render(cli.seed);
-  const Runner runner{platform, placement, *scene};
-
-  overswitch::FailoverSupervisor fault_free(platform, {});
-  GoldenRun golden{runner.run(fault_free, nullptr), false};
-  if (!golden.run.finished)
-    throw CommandError("the fault-free cycle did not finish: " +
-                       golden.run.abandoned.value_or("no reason given"));
-  golden.unsafe = runner.crosses(golden.run);
+  const std::unique_ptr<CampaignScene> scene = supervised_scene(cli.seed, {}, platform, placement);
 
   overswitch::FailoverSupervisor supervisor(platform, faults);
-  const auto faulty = [&](emu::TraceSink* sink) { return runner.run(supervisor, sink); };
+  const auto faulty = [&](emu::TraceSink* sink) {
+    return emulate_supervised(*scene, platform, placement, supervisor, sink);
+  };
   const occam_port::CycleEmulation run =
       cli.trace ? with_trace_file(*cli.trace, [&](emu::ChromeTraceWriter& w) { return faulty(&w); })
                 : faulty(nullptr);
-  const FaultVerdict verdict = judge_fault_run(golden, run, supervisor, runner.crosses(run));
+  const FaultVerdict verdict =
+      judge_fault_run(scene->golden, run, supervisor, crosses_obstacle(*scene, run));
   if (!cli.json) {
     print_verdict(verdict, supervisor);
     return kSuccess;
