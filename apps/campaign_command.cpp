@@ -66,7 +66,8 @@ emulator::PlatformSpec campaign_platform(const overswitch::CampaignSpec& spec) {
       spec.platform.find('/') != std::string::npos || spec.platform.ends_with(".toml");
   const std::string name =
       is_path ? (fs::path(spec.source).parent_path() / spec.platform).string() : spec.platform;
-  emulator::PlatformSpec platform = platform_for(name);
+  emulator::PlatformSpec platform =
+      overswitch::protected_platform(platform_for(name), spec.protection);
   if (!platform.overswitch)
     throw CommandError(fmt::format("{}: platform {} has no [overswitch] table, so no module can "
                                    "fail over",

@@ -70,6 +70,20 @@ void take_lines(Worker& worker, std::uint64_t first, std::vector<std::string>& r
   }
 }
 
+/// Which run a worker died on (the first of its runs with no record) and how.
+std::string crash_message(const std::vector<std::string>& records, std::uint64_t first,
+                          std::uint64_t last, std::size_t worker, std::size_t workers, int status) {
+  std::uint64_t run = first + worker;
+  while (run < last && !records[run - first].empty())
+    run += workers;
+  const std::string how =
+      WIFSIGNALED(status)
+          ? fmt::format("killed by signal {} ({})", WTERMSIG(status), ::strsignal(WTERMSIG(status)))
+          : fmt::format("exited with status {}", WEXITSTATUS(status));
+  return fmt::format("a campaign worker stopped at run {}: {}; --replay {} runs it alone", run, how,
+                     run);
+}
+
 } // namespace
 
 std::vector<std::string> run_in_jobs(std::uint64_t first, std::uint64_t last, int jobs,
@@ -123,15 +137,18 @@ std::vector<std::string> run_in_jobs(std::uint64_t first, std::uint64_t last, in
         progress(done);
     }
   }
-  bool crashed = false;
-  for (const Worker& w : workers) {
+  std::string crash;
+  for (std::size_t j = 0; j < workers.size(); ++j) {
     int status = 0;
-    ::waitpid(w.pid, &status, 0);
-    crashed = crashed || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+    ::waitpid(workers[j].pid, &status, 0);
+    if (crash.empty() && (!WIFEXITED(status) || WEXITSTATUS(status) != 0))
+      crash = crash_message(records, first, last, j, workers.size(), status);
   }
   if (!failure.empty())
     throw CommandError(failure);
-  if (crashed || done != last - first)
+  if (!crash.empty())
+    throw CommandError(crash);
+  if (done != last - first)
     throw CommandError(
         fmt::format("a campaign worker stopped after {} of {} runs", done, last - first));
   return records;

@@ -6,6 +6,7 @@
 
 #include "marsokhod/eval/terrain/terrain_scoring.hpp"
 #include "marsokhod/occam_port/navigation/navigation_program.hpp"
+#include "marsokhod/overswitch/split_mix.hpp"
 #include "marsokhod/world/scene/rendered_site.hpp"
 
 #include <fmt/format.h>
@@ -20,27 +21,6 @@ namespace emu = emulator;
 /// Longest a run may take, emulated: a cycle of about 20 s restarted a few times; past this,
 /// with no watchdog running out, the run is a hang.
 constexpr emu::Tick kTimeLimit = 600 * emu::kSecond;
-
-/// SplitMix64 (Steele, Lea and Flood, 2014): run k's stream depends on (seed, k) alone.
-class RunRandom {
-public:
-  RunRandom(std::uint64_t seed, std::uint64_t run)
-      : state_(seed * 0x9E3779B97F4A7C15ULL ^ (run + 0x632BE59BD9B4E019ULL)) {
-    next();
-  }
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  /// Uniform in [0, 1), 53 bits.
-  double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
-
-private:
-  std::uint64_t state_;
-};
 
 std::vector<std::string> powered_modules(const emu::PlatformSpec& platform) {
   std::vector<std::string> names;
@@ -64,7 +44,8 @@ void check_modules(const overswitch::CampaignSpec& spec, const emu::PlatformSpec
 
 std::unique_ptr<CampaignScene> supervised_scene(std::uint64_t seed, const SceneChanges& changes,
                                                 const emu::PlatformSpec& platform,
-                                                const occam_port::Placement& placement) {
+                                                const occam_port::Placement& placement,
+                                                const overswitch::Protection& protection) {
   auto scene = std::make_unique<CampaignScene>();
   scene->world_seed = seed;
   scene->description = world::default_scene(seed, 128);
@@ -76,11 +57,16 @@ std::unique_ptr<CampaignScene> supervised_scene(std::uint64_t seed, const SceneC
   scene->rig = std::make_unique<imaging::StereoRig>(scene->description.rig);
   scene->truth_terrain = nav::reconstruct_terrain(scene->frame.truth.disparity, *scene->rig,
                                                   scene->description.placement.attitude);
-  overswitch::FailoverSupervisor fault_free(platform, {});
+  overswitch::FailoverSupervisor fault_free(platform, {}, protection);
   scene->golden.run = emulate_supervised(*scene, platform, placement, fault_free, nullptr);
   if (!scene->golden.run.finished)
     throw CommandError(fmt::format("world seed {}: the fault-free cycle did not finish: {}", seed,
                                    scene->golden.run.abandoned.value_or("no reason given")));
+  if (!fault_free.overswitch().failovers().empty() || !scene->golden.run.halts.empty())
+    throw CommandError(fmt::format(
+        "world seed {}: the fault-free cycle failed a module over{}", seed,
+        scene->golden.run.halts.empty() ? std::string()
+                                        : ": " + scene->golden.run.halts.front().cause));
   scene->golden.unsafe = crosses_obstacle(*scene, scene->golden.run);
   return scene;
 }
@@ -113,8 +99,8 @@ CampaignRunner::CampaignRunner(const overswitch::CampaignSpec& spec,
   for (const overswitch::FaultMix& mix : spec.faults)
     total_weight_ += mix.weight;
   for (const std::uint64_t seed : spec.world_seeds) {
-    scenes_.push_back(
-        supervised_scene(seed, SceneChanges{spec.light, spec.rock_cover}, platform, placement));
+    scenes_.push_back(supervised_scene(seed, SceneChanges{spec.light, spec.rock_cover}, platform,
+                                       placement, spec.protection));
     if (progress)
       progress(scenes_.size());
   }
@@ -122,7 +108,7 @@ CampaignRunner::CampaignRunner(const overswitch::CampaignSpec& spec,
 
 // Kind by weight, then module, then the strike time over the fault-free cycle's share.
 CampaignDraw CampaignRunner::draw(std::uint64_t run) const {
-  RunRandom random(spec_->seed, run);
+  overswitch::SplitMix random(spec_->seed, run);
   CampaignDraw d;
   d.run = run;
   d.scene = random.below(scenes_.size());
@@ -138,17 +124,19 @@ CampaignDraw CampaignRunner::draw(std::uint64_t run) const {
   const std::vector<std::string> modules =
       mix->modules.empty() ? powered_modules(*platform_) : mix->modules;
   d.fault.kind = mix->kind;
+  d.fault.memory = mix->memory;
   d.fault.module = modules[random.below(modules.size())];
   const auto cycle = static_cast<double>(scenes_[d.scene]->golden.run.emulated);
   const double share = mix->from_share + random.unit() * (mix->to_share - mix->from_share);
   d.fault.offset = static_cast<emu::Tick>(share * cycle);
+  d.fault.draw = random.next();
   return d;
 }
 
 nlohmann::ordered_json CampaignRunner::run(std::uint64_t run, emu::TraceSink* trace) const {
   const CampaignDraw d = draw(run);
   const CampaignScene& scene = *scenes_[d.scene];
-  overswitch::FailoverSupervisor supervisor(*platform_, {d.fault});
+  overswitch::FailoverSupervisor supervisor(*platform_, {d.fault}, spec_->protection);
   const occam_port::CycleEmulation emulated =
       emulate_supervised(scene, *platform_, *placement_, supervisor, trace);
   const FaultVerdict verdict =
@@ -156,10 +144,12 @@ nlohmann::ordered_json CampaignRunner::run(std::uint64_t run, emu::TraceSink* tr
   nlohmann::ordered_json record;
   record["run"] = run;
   record["world_seed"] = scene.world_seed;
-  record["fault"] = {{"kind", overswitch::to_string(d.fault.kind)},
-                     {"module", d.fault.module},
-                     {"at_s", emu::to_seconds(d.fault.offset)},
-                     {"spec", overswitch::describe(d.fault)}};
+  record["fault"] = supervisor.injected().empty()
+                        ? nlohmann::ordered_json{{"kind", overswitch::to_string(d.fault.kind)},
+                                                 {"module", d.fault.module},
+                                                 {"at_s", emu::to_seconds(d.fault.offset)},
+                                                 {"spec", overswitch::describe(d.fault)}}
+                        : injected_json(supervisor.injected().front());
   record.update(verdict_json(verdict));
   return record;
 }

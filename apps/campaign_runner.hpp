@@ -38,10 +38,12 @@ struct SceneChanges {
 };
 
 /// World `seed` at 128x128, rendered with its ground truth, and its fault-free cycle under the
-/// overswitch; CommandError when that cycle does not finish.
+/// overswitch with `protection` (on a platform that carries its costs: protected_platform);
+/// CommandError when that cycle does not finish, or fails a module over.
 std::unique_ptr<CampaignScene> supervised_scene(std::uint64_t seed, const SceneChanges& changes,
                                                 const emulator::PlatformSpec& platform,
-                                                const occam_port::Placement& placement);
+                                                const occam_port::Placement& placement,
+                                                const overswitch::Protection& protection);
 /// The scene's cycle under `supervisor`, cut at 600 s emulated (a hang).
 occam_port::CycleEmulation emulate_supervised(const CampaignScene& scene,
                                               const emulator::PlatformSpec& platform,

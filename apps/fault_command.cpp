@@ -9,6 +9,8 @@
 #include "trace_file.hpp"
 
 #include "marsokhod/occam_port/navigation/navigation_program.hpp"
+#include "marsokhod/overswitch/protection.hpp"
+#include "marsokhod/overswitch/split_mix.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -29,9 +31,23 @@ struct FaultCli {
   std::string platform;
   std::uint64_t seed = 1;
   std::vector<std::string> inject;
+  bool edac = false;
+  std::optional<double> scrub_s;
+  bool link_checksums = false;
+  bool nav_check = false;
   std::optional<std::string> trace;
   bool json = false;
 };
+
+overswitch::Protection protection_of(const FaultCli& cli) {
+  overswitch::Protection protection;
+  protection.edac = cli.edac;
+  if (cli.scrub_s)
+    protection.scrub_period = static_cast<emu::Tick>(*cli.scrub_s * emu::kSecond);
+  protection.link_checksums = cli.link_checksums;
+  protection.nav_check = cli.nav_check;
+  return protection;
+}
 
 std::vector<overswitch::Fault> parse_faults(const FaultCli& cli,
                                             const emu::PlatformSpec& platform) {
@@ -46,6 +62,8 @@ std::vector<overswitch::Fault> parse_faults(const FaultCli& cli,
         std::find(processes.begin(), processes.end(), fault.stage) == processes.end())
       throw UsageError(fmt::format("--inject '{}': '{}' is no stage of the program (stages: {})",
                                    spec, fault.stage, fmt::join(processes, ", ")));
+    // Each fault draws its address and bit from the seed and its place in the list alone.
+    fault.draw = overswitch::SplitMix(cli.seed, faults.size()).next();
     faults.push_back(std::move(fault));
   }
   return faults;
@@ -54,11 +72,17 @@ std::vector<overswitch::Fault> parse_faults(const FaultCli& cli,
 void print_verdict(const FaultVerdict& v, const overswitch::FailoverSupervisor& supervisor) {
   fmt::print("outcome: {}{}\n", to_string(v.outcome),
              v.reason.empty() ? "" : " (" + v.reason + ")");
-  for (const overswitch::InjectedFault& f : supervisor.injected())
-    fmt::print("  {:9.6f} s  fault {}\n", emu::to_seconds(f.at), overswitch::describe(f.fault));
+  for (const overswitch::InjectedFault& f : supervisor.injected()) {
+    fmt::print("  {:9.6f} s  fault {}", emu::to_seconds(f.at), overswitch::describe(f.fault));
+    if (f.hit)
+      fmt::print(": bit {}{} of #{:08X}, {} memory, {}", f.hit->bit,
+                 f.hit->check_bit ? " (a check bit)" : "", f.hit->address, f.hit->region(),
+                 f.hit->buffer());
+    fmt::print("{}\n", f.effect.empty() ? "" : ": " + f.effect);
+  }
   for (const HaltFigure& h : v.halts)
-    fmt::print("  {:9.6f} s  {} halted on a memory fault: {} asking for {}\n", h.time_s, h.module,
-               h.process, h.what);
+    fmt::print("  {:9.6f} s  {} halted: {} ({}{})\n", h.time_s, h.module, h.cause,
+               h.process.empty() ? "" : h.process + ", ", h.what);
   for (const overswitch::OverswitchEvent& e : supervisor.overswitch().events())
     fmt::print("  {:9.6f} s  overswitch: {} {}{}\n", emu::to_seconds(e.time),
                overswitch::to_string(e.kind), e.module, e.detail.empty() ? "" : ": " + e.detail);
@@ -77,7 +101,11 @@ void print_verdict(const FaultVerdict& v, const overswitch::FailoverSupervisor& 
 }
 
 int run_fault(const FaultCli& cli) {
-  const emu::PlatformSpec platform = platform_for(cli.platform);
+  if (cli.scrub_s && !cli.edac)
+    throw UsageError("--scrub needs --edac: scrubbing rewrites memory through the EDAC");
+  const overswitch::Protection protection = protection_of(cli);
+  const emu::PlatformSpec platform =
+      overswitch::protected_platform(platform_for(cli.platform), protection);
   if (!platform.overswitch)
     throw CommandError(fmt::format("{}: platform {} has no [overswitch] table, so no module can "
                                    "fail over (the onboard platform has one)",
@@ -88,9 +116,10 @@ int run_fault(const FaultCli& cli) {
                                  occam_port::navigation_program_shape());
   if (!cli.json)
     fmt::print(stderr, "rendering world seed {} at 128x128...\n", cli.seed);
-  const std::unique_ptr<CampaignScene> scene = supervised_scene(cli.seed, {}, platform, placement);
+  const std::unique_ptr<CampaignScene> scene =
+      supervised_scene(cli.seed, {}, platform, placement, protection);
 
-  overswitch::FailoverSupervisor supervisor(platform, faults);
+  overswitch::FailoverSupervisor supervisor(platform, faults, protection);
   const auto faulty = [&](emu::TraceSink* sink) {
     return emulate_supervised(*scene, platform, placement, supervisor, sink);
   };
@@ -108,8 +137,7 @@ int run_fault(const FaultCli& cli) {
   j["seed"] = cli.seed;
   j["faults"] = nlohmann::ordered_json::array();
   for (const overswitch::InjectedFault& f : supervisor.injected())
-    j["faults"].push_back(
-        {{"spec", overswitch::describe(f.fault)}, {"at_s", emu::to_seconds(f.at)}});
+    j["faults"].push_back(injected_json(f));
   j.update(verdict_json(verdict));
   j["overswitch_events"] = nlohmann::ordered_json::array();
   for (const overswitch::OverswitchEvent& e : supervisor.overswitch().events())
@@ -141,10 +169,23 @@ Command make_fault_command(CLI::App& parent) {
       ->capture_default_str()
       ->transform(integer_between<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()));
   app->add_option("--inject", cli->inject,
-                  "A fault, KIND:MODULE@WHEN, repeatable: KIND hang, power or leak (memory "
-                  "exhaustion); WHEN a time from "
-                  "the cycle's start (1.05s, 250ms) or a stage and an offset (matching+0.5s)")
+                  "A fault, KIND:MODULE@WHEN[,KEY=VALUE...], repeatable. KIND: hang, power, leak "
+                  "(memory exhaustion; bytes=N), seu (an upset; addr=#ADDR,bit=B or buffer=NAME "
+                  "or over=allocated|memory), stuck (as seu, value=0|1), link, linkbit, ackloss "
+                  "(on MODULE.linkN; dir=out|in|both, for=DURATION, byte=K, bit=B). WHEN: a time "
+                  "from the cycle's start (1.05s, 250ms) or a stage and an offset "
+                  "(matching+0.5s). Drawn addresses and bits come from --seed. See "
+                  "docs/faults.md")
       ->required();
+  app->add_flag("--edac", cli->edac,
+                "SEC-DED EDAC on the modules' external memory (adds its wait states)");
+  app->add_option("--scrub", cli->scrub_s,
+                  "With --edac: scrub each module's external memory once per this many seconds")
+      ->check(real_between(0.01, 3600.0));
+  app->add_flag("--link-checksums", cli->link_checksums,
+                "A checksum after each link message, a bad message sent again");
+  app->add_flag("--nav-check", cli->nav_check,
+                "The partner module checks the path's band of the disparity before driving");
   app->add_option("--trace", cli->trace, "Write a Chrome trace (Perfetto) of the faulty run here");
   app->add_flag("--json", cli->json, "Print a machine-readable verdict on stdout");
   return {app, [cli] {

@@ -2,6 +2,8 @@
 
 #include "fault_verdict.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 namespace marsokhod::apps {
@@ -23,6 +25,23 @@ bool telemetry_delivered(const occam_port::CycleEmulation& golden,
                     run.telemetry.end() - static_cast<std::ptrdiff_t>(golden.telemetry.size()));
 }
 
+/// The fault stopped its module when it struck: a hang, a power loss, or a memory fault that
+/// sent the module astray.
+bool stopped_module(const overswitch::InjectedFault& fault) {
+  return overswitch::stops_module(fault.fault.kind) ||
+         (fault.hit && fault.hit->corrupts_control() && fault.effect.starts_with("module hung"));
+}
+
+/// The EDAC saw the fault: it corrected it, or flagged it uncorrectable.
+bool edac_saw(const overswitch::InjectedFault& fault) {
+  return fault.hit && fault.hit->effect != emu::UpsetEffect::flipped;
+}
+
+/// The fault reached what the program computes with or runs on.
+bool reached_program(const overswitch::InjectedFault& fault) {
+  return fault.hit && (fault.hit->corrupts_data() || fault.hit->corrupts_control());
+}
+
 /// When each module stopped working: a hang or power loss when it struck, a leak when the
 /// module halted on it.
 std::vector<std::pair<std::string, emu::Tick>>
@@ -30,9 +49,9 @@ failures(const occam_port::CycleEmulation& run, const overswitch::FailoverSuperv
   std::vector<std::pair<std::string, emu::Tick>> failed;
   // A hang or power loss after the cycle ended (its run drains the links) stopped nothing.
   for (const overswitch::InjectedFault& fault : supervisor.injected())
-    if (fault.fault.kind != overswitch::Fault::Kind::leak && fault.at <= run.emulated)
+    if (stopped_module(fault) && fault.at <= run.emulated)
       failed.emplace_back(fault.fault.module, fault.at);
-  for (const occam_port::MemoryFaultFigures& halt : run.halts)
+  for (const occam_port::ModuleHalt& halt : run.halts)
     failed.emplace_back(halt.node, halt.time);
   return failed;
 }
@@ -102,21 +121,23 @@ FaultVerdict judge_fault_run(const GoldenRun& golden, const occam_port::CycleEmu
                              bool crosses_obstacle) {
   FaultVerdict v;
   const auto& failovers = supervisor.overswitch().failovers();
-  v.detected = !failovers.empty();
-  v.activated = !failures(run, supervisor).empty();
+  const auto& injected = supervisor.injected();
+  v.detected = !failovers.empty() || std::any_of(injected.begin(), injected.end(), edac_saw);
+  v.activated = !failures(run, supervisor).empty() ||
+                std::any_of(injected.begin(), injected.end(), reached_program);
   for (const overswitch::Failover& f : failovers) {
     const emu::Tick powered = f.detected;
     v.failovers.push_back({f.failed, f.spare, f.ok ? emu::to_seconds(f.booted - powered) : 0.0});
   }
-  if (v.detected && !supervisor.injected().empty())
+  if (!failovers.empty() && !supervisor.injected().empty())
     v.detection_latency_s =
         emu::to_seconds(failovers.front().detected - supervisor.injected().front().at);
   const auto whole = std::find_if(failovers.begin(), failovers.end(),
                                   [](const overswitch::Failover& f) { return f.ok; });
   if (whole != failovers.end())
     v.recovery_s = emu::to_seconds(whole->booted - failovers.front().detected);
-  for (const occam_port::MemoryFaultFigures& h : run.halts)
-    v.halts.push_back({h.node, h.process, h.what, emu::to_seconds(h.time)});
+  for (const occam_port::ModuleHalt& h : run.halts)
+    v.halts.push_back({h.node, h.process, h.what, h.cause, emu::to_seconds(h.time)});
   v.path_equals_golden = run.finished && same_path(golden.run, run);
   v.golden_unsafe = golden.unsafe;
   v.unsafe = run.finished && crosses_obstacle;
@@ -149,8 +170,11 @@ nlohmann::ordered_json verdict_json(const FaultVerdict& v) {
   if (!v.halts.empty()) {
     j["halts"] = nlohmann::ordered_json::array();
     for (const HaltFigure& h : v.halts)
-      j["halts"].push_back(
-          {{"module", h.module}, {"process", h.process}, {"what", h.what}, {"time_s", h.time_s}});
+      j["halts"].push_back({{"module", h.module},
+                            {"process", h.process},
+                            {"what", h.what},
+                            {"cause", h.cause},
+                            {"time_s", h.time_s}});
   }
   j["path_equals_golden"] = v.path_equals_golden;
   j["unsafe"] = v.unsafe;
@@ -159,6 +183,28 @@ nlohmann::ordered_json verdict_json(const FaultVerdict& v) {
   j["wheels_commanded_while_failed"] = v.wheels_commanded_while_failed;
   j["emulated_s"] = v.emulated_s;
   j["delay_s"] = v.delay_s;
+  return j;
+}
+
+nlohmann::ordered_json injected_json(const overswitch::InjectedFault& f) {
+  nlohmann::ordered_json j;
+  j["kind"] = overswitch::to_string(f.fault.kind);
+  j["module"] = f.fault.module;
+  j["at_s"] = emu::to_seconds(f.at);
+  j["spec"] = overswitch::describe(f.fault);
+  if (!f.effect.empty())
+    j["effect"] = f.effect;
+  if (!f.hit)
+    return j;
+  const overswitch::MemoryHit& hit = *f.hit;
+  j["address"] = fmt::format("#{:08X}", hit.address);
+  j["bit"] = hit.bit;
+  j["check_bit"] = hit.check_bit;
+  j["region"] = hit.region();
+  j["buffer"] = hit.buffer();
+  j["owner"] =
+      hit.block ? nlohmann::ordered_json(hit.block->owner) : nlohmann::ordered_json(nullptr);
+  j["edac"] = emu::to_string(hit.effect);
   return j;
 }
 

@@ -33,11 +33,12 @@ struct FailoverFigure {
   double boot_s = 0.0; ///< from the spare's power-on to it running; 0 when it never ran
 };
 
-/// A module halted on a memory fault (HaltOnError): where and when.
+/// A module halted on an error (HaltOnError): where, why and when.
 struct HaltFigure {
   std::string module;
   std::string process;
   std::string what;
+  std::string cause;
   double time_s = 0.0;
 };
 
@@ -67,5 +68,9 @@ FaultVerdict judge_fault_run(const GoldenRun& golden, const occam_port::CycleEmu
                              bool crosses_obstacle);
 
 nlohmann::ordered_json verdict_json(const FaultVerdict& verdict);
+
+/// A fault as it struck: its spec, time, and for a memory fault the bit it hit, the region and
+/// buffer, and what that did (the EDAC's correction, the module sent astray...).
+nlohmann::ordered_json injected_json(const overswitch::InjectedFault& fault);
 
 } // namespace marsokhod::apps

@@ -3,10 +3,12 @@
 #include "marsokhod/overswitch/campaign_file.hpp"
 
 #include "marsokhod/io/formats/toml_file.hpp"
+#include "marsokhod/overswitch/upset_rates.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace marsokhod::overswitch {
@@ -42,6 +44,10 @@ public:
     if (!value)
       fail(key, fmt::format("must be {}, not {}", type, io::toml_type_name(node->type())));
     return value;
+  }
+
+  bool flag(std::string_view key, bool fallback) {
+    return optional<bool>(key, "true or false").value_or(fallback);
   }
 
   std::string text(std::string_view key, std::string fallback) {
@@ -137,19 +143,38 @@ void read_scenarios(Table& scenarios, CampaignSpec& spec) {
   scenarios.reject_unknown_keys();
 }
 
+/// Where an upset or a stuck bit is drawn: over the allocated memory (the default) or all of it,
+/// or in the buffers whose name contains a text.
+void read_memory_target(Table& fault, FaultMix& mix) {
+  const std::string over = fault.text("over", "allocated");
+  if (over == "memory")
+    mix.memory.over = MemoryTarget::Over::memory;
+  else if (over != "allocated")
+    fault.fail("over", fmt::format("'{}' is neither \"allocated\" nor \"memory\"", over));
+  mix.memory.buffer = fault.text("buffer", "");
+  if (fault.get("buffer") != nullptr && mix.memory.buffer.empty())
+    fault.fail("buffer", "name the buffer, or leave the key out");
+  if (mix.kind == Fault::Kind::stuck)
+    mix.memory.stuck_value = fault.integer("value", 0, 1, mix.memory.stuck_value ? 1 : 0) == 1;
+}
+
 FaultMix read_fault(Table& fault) {
+  static const std::map<std::string, Fault::Kind> kKinds{{"hang", Fault::Kind::hang},
+                                                         {"power", Fault::Kind::power_loss},
+                                                         {"leak", Fault::Kind::leak},
+                                                         {"seu", Fault::Kind::upset},
+                                                         {"stuck", Fault::Kind::stuck}};
   FaultMix mix;
   mix.line = fault.line();
   const std::string kind = fault.text("kind", "");
-  if (kind == "hang")
-    mix.kind = Fault::Kind::hang;
-  else if (kind == "power")
-    mix.kind = Fault::Kind::power_loss;
-  else if (kind == "leak")
-    mix.kind = Fault::Kind::leak;
-  else
-    fault.fail("kind",
-               fmt::format("'{}' is no fault kind of a campaign (hang, power, leak)", kind));
+  const auto found = kKinds.find(kind);
+  if (found == kKinds.end())
+    fault.fail("kind", fmt::format("'{}' is no fault kind of a campaign (hang, power, leak, seu, "
+                                   "stuck)",
+                                   kind));
+  mix.kind = found->second;
+  if (is_memory_fault(mix.kind))
+    read_memory_target(fault, mix);
   mix.weight = fault.real("weight", 1e-9, 1e9).value_or(1.0);
   if (const toml::array* modules = fault.array("modules"))
     for (const toml::node& module : *modules) {
@@ -164,6 +189,37 @@ FaultMix read_fault(Table& fault) {
     fault.fail("to_share", "must be more than from_share: the strike's share of the cycle");
   fault.reject_unknown_keys();
   return mix;
+}
+
+void read_protection(Table& protection, CampaignSpec& spec) {
+  Protection& p = spec.protection;
+  p.edac = protection.flag("edac", false);
+  if (const std::optional<double> scrub = protection.real("scrub_period_s", 0.01, 86400.0)) {
+    if (!p.edac)
+      protection.fail("scrub_period_s", "scrubbing rewrites memory through the EDAC: set edac");
+    p.scrub_period = static_cast<emulator::Tick>(*scrub * static_cast<double>(emulator::kSecond));
+  }
+  p.link_checksums = protection.flag("link_checksums", false);
+  p.nav_check = protection.flag("nav_check", false);
+  protection.reject_unknown_keys();
+}
+
+void read_upsets(Table& upsets, CampaignSpec& spec) {
+  const std::string preset = upsets.text("preset", "");
+  const std::optional<double> rate = upsets.real("rate_per_bit_day", 1e-15, 1e-3);
+  if (!preset.empty() && rate)
+    upsets.fail("rate_per_bit_day", "give a preset or a rate, not both");
+  if (rate) {
+    spec.upset_rate = UpsetRate{"custom", *rate, "the campaign file"};
+  } else if (!preset.empty()) {
+    const std::optional<UpsetRate> known = upset_preset(preset);
+    if (!known)
+      upsets.fail("preset", fmt::format("'{}' is no preset ({})", preset, upset_preset_names()));
+    spec.upset_rate = known;
+  } else {
+    upsets.fail("preset", "name a preset or give rate_per_bit_day");
+  }
+  upsets.reject_unknown_keys();
 }
 
 void read_stop(Table& stop, CampaignSpec& spec) {
@@ -198,6 +254,12 @@ CampaignSpec load_campaign(const std::filesystem::path& file) {
       top.fail("fault", "every [[fault]] must be a table");
     Table fault(*node.as_table(), spec, "a [[fault]]");
     spec.faults.push_back(read_fault(fault));
+  }
+  Table protection(table_named(top, "protection", false), spec, "[protection]");
+  read_protection(protection, spec);
+  if (top.get("upsets") != nullptr) {
+    Table upsets(table_named(top, "upsets", true), spec, "[upsets]");
+    read_upsets(upsets, spec);
   }
   Table stop(table_named(top, "stop", false), spec, "[stop]");
   read_stop(stop, spec);

@@ -5,6 +5,7 @@
 #include "marsokhod/emulator/memory/memory_arena.hpp"
 #include "marsokhod/overswitch/heartbeat.hpp"
 #include "marsokhod/overswitch/link_boot.hpp"
+#include "marsokhod/overswitch/scrubber.hpp"
 
 #include <fmt/format.h>
 
@@ -14,8 +15,9 @@
 namespace marsokhod::overswitch {
 
 FailoverSupervisor::FailoverSupervisor(const emulator::PlatformSpec& platform,
-                                       std::vector<Fault> faults)
-    : platform_(&platform), faults_(std::move(faults)), scheduled_(faults_.size(), false) {
+                                       std::vector<Fault> faults, Protection protection)
+    : platform_(&platform), faults_(std::move(faults)), protection_(protection),
+      scheduled_(faults_.size(), false) {
   if (!platform.overswitch)
     throw std::invalid_argument(fmt::format(
         "platform {} has no [overswitch] table: no failover to supervise", platform.name));
@@ -45,10 +47,12 @@ void FailoverSupervisor::attach(occam_port::CycleControl& control) {
     if (std::find(names.begin(), names.end(), node) != names.end())
       overswitch_->kick(control_->node(node));
   });
-  for (emulator::Node* module : modules)
+  for (emulator::Node* module : modules) {
+    protect(*module);
     if (module->running())
       if (emulator::SharedOutput* output = control.device_output(module->name()))
         start_heartbeat(*module, *output, spec.heartbeat_period, heartbeats_stop_);
+  }
   overswitch_->start();
   for (std::size_t i = 0; i < faults_.size(); ++i)
     if (faults_[i].stage.empty()) {
@@ -102,7 +106,7 @@ void FailoverSupervisor::inject(const Fault& fault) {
     control_->abandon(*error_);
     return;
   }
-  injected_.push_back({fault, control_->kernel().now()});
+  injected_.push_back({fault, control_->kernel().now(), std::nullopt, {}});
   switch (fault.kind) {
   case Fault::Kind::hang:
     node->hang();
@@ -111,22 +115,73 @@ void FailoverSupervisor::inject(const Fault& fault) {
     node->power_off();
     return;
   case Fault::Kind::leak:
-    leak(*node);
+    leak(*node, fault);
+    return;
+  case Fault::Kind::upset:
+  case Fault::Kind::stuck:
+    strike(*node, injected_.back());
+    return;
+  case Fault::Kind::link_down:
+  case Fault::Kind::link_bit:
+  case Fault::Kind::ack_lost:
     return;
   }
 }
 
-// The leak takes the largest free block of the memory the buffers come from, so the module's
-// next buffer of any size there fails (a halted or unpowered module leaks nothing).
-void FailoverSupervisor::leak(emulator::Node& node) {
+// By default the leak takes the largest free block of the memory the buffers come from, so the
+// module's next buffer of any size there fails (a halted or unpowered module leaks nothing).
+void FailoverSupervisor::leak(emulator::Node& node, const Fault& fault) {
   if (!node.running())
     return;
   emulator::MemoryArena& memory = node.memory();
   const std::size_t free = memory.largest_free_block(memory.default_placement());
-  if (free == 0)
+  const std::size_t bytes = std::min(free, fault.leak_bytes.value_or(free));
+  if (bytes == 0)
     return;
-  memory.allocate_block(free, emulator::MemoryArena::kWordBytes, memory.default_placement(),
+  memory.allocate_block(bytes, emulator::MemoryArena::kWordBytes, memory.default_placement(),
                         "leak");
+}
+
+// The bit is struck in whatever the module's memory holds now. Data is left for the program to
+// read; what the processor itself runs on (code, a workspace, its reserved words) is not
+// emulated bit for bit, so a hit there is taken to send the module astray: it hangs, and its
+// watchdog sees it. An error the EDAC cannot correct is flagged, and the module halts.
+void FailoverSupervisor::strike(emulator::Node& node, InjectedFault& injected) {
+  if (!node.powered()) {
+    injected.effect = "none: the module is off";
+    return;
+  }
+  try {
+    injected.hit = strike_memory(node, injected.fault);
+  } catch (const MemoryTargetError& error) {
+    error_ = fmt::format("fault {}: {}", describe(injected.fault), error.what());
+    control_->abandon(*error_);
+    return;
+  }
+  const MemoryHit& hit = *injected.hit;
+  if (hit.effect == emulator::UpsetEffect::uncorrectable) {
+    injected.effect = "EDAC: uncorrectable, module halted";
+    control_->halt(node.name(), fmt::format("word #{:08X}", hit.address & ~3U),
+                   "EDAC: uncorrectable error, two in one word");
+    return;
+  }
+  if (hit.effect == emulator::UpsetEffect::corrected) {
+    injected.effect = "EDAC: corrected on every read";
+    return;
+  }
+  if (hit.corrupts_control() && node.running()) {
+    injected.effect = "module hung: " + hit.buffer() + " struck";
+    node.hang();
+    return;
+  }
+  injected.effect = hit.corrupts_data() ? "data corrupted" : "none: free memory";
+}
+
+// EDAC on the module's external memory, and, on a running module, its scrubber.
+void FailoverSupervisor::protect(emulator::Node& module) {
+  module.upsets().set_edac_on_external(protection_.edac);
+  if (protection_.edac && protection_.scrub_period && module.running())
+    start_scrubber(module, *protection_.scrub_period, heartbeats_stop_);
 }
 
 // The spare takes the place of the oldest module that failed with a share of the program.
@@ -141,6 +196,7 @@ void FailoverSupervisor::boot(emulator::Node& spare, emulator::Node& from,
 
 void FailoverSupervisor::booted(const Failover& failover) {
   emulator::Node& spare = control_->node(failover.spare);
+  protect(spare);
   if (emulator::SharedOutput* output = control_->device_output(spare.name()))
     start_heartbeat(spare, *output, platform_->overswitch->heartbeat_period, heartbeats_stop_);
   if (vacated_.empty() || control_->program_finished())

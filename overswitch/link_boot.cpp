@@ -65,7 +65,8 @@ void boot_over_link(const emulator::PlatformSpec& platform, emulator::LinkNetwor
           in.input(std::span(block.data(), static_cast<std::size_t>(length)));
         }
         spare.memory().allocate_block(code_bytes, emulator::MemoryArena::kWordBytes,
-                                      emulator::Placement::on_chip_then_external, "code");
+                                      emulator::Placement::on_chip_then_external, "code",
+                                      emulator::BlockKind::code);
         done();
       },
       emulator::NodeSpawnOptions{emulator::Priority::high, 0, 0, nullptr});

@@ -101,7 +101,9 @@ Address MemoryArena::allocate_block(std::size_t bytes, std::size_t alignment, Pl
   if (!offset)
     fault(bytes, alignment, placement, owner);
 
-  const Block block{size, owner_index(owner), kind, on_chip};
+  const std::size_t owner_id = owner_index(owner);
+  const std::size_t label = kind == BlockKind::data ? owner_labels_[owner_id] : 0;
+  const Block block{size, owner_id, kind, on_chip, label};
   blocks_.emplace(*offset, block);
   account_allocation(block);
   return kOnChipBase + static_cast<Address>(*offset);
@@ -160,8 +162,10 @@ void MemoryArena::give_back(FreeList& list, std::size_t offset, std::size_t size
 std::size_t MemoryArena::owner_index(std::string_view owner) {
   const std::string name(owner.empty() ? kNoProcess : owner);
   const auto [it, inserted] = owner_ids_.try_emplace(name, owner_usage_.size());
-  if (inserted)
+  if (inserted) {
     owner_usage_.push_back(OwnerUsage{name, 0, 0, 0, 0, 0});
+    owner_labels_.push_back(0);
+  }
   return it->second;
 }
 

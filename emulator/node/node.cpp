@@ -52,7 +52,8 @@ std::atomic<std::uint64_t> last_serial{0};
 Node::Node(Kernel& kernel, const NodeSpec& spec)
     : kernel_(&kernel), serial_(++last_serial), spec_(spec),
       cpu_(std::make_unique<Cpu>(kernel, spec.name, timing_of(spec.cpu))),
-      memory_(make_memory(spec)), powered_(spec.powered) {
+      memory_(make_memory(spec)), upsets_(std::make_unique<MemoryUpsets>(*memory_)),
+      powered_(spec.powered) {
   cpu_->set_node(this);
   attach_memory(*memory_, kernel, spec_.name);
   if (TraceSink* sink = kernel.trace()) {

@@ -107,7 +107,8 @@ bool CycleRun::start() {
     emulator::Node& node = net_.node(node_plan.node);
     try {
       node.memory().allocate_block(node_plan.code_bytes, emulator::MemoryArena::kWordBytes,
-                                   emulator::Placement::on_chip_then_external, "code");
+                                   emulator::Placement::on_chip_then_external, "code",
+                                   emulator::BlockKind::code);
     } catch (const emulator::MemoryFault& fault) {
       record_fault(state(), node, fault, fmt::format("code, {} B", node_plan.code_bytes));
       return false;
@@ -132,15 +133,29 @@ void CycleRun::spawn_processes() {
         run_process(context);
         context.end_stage();
       } catch (const emulator::MemoryFault& fault) {
-        record_fault(cycle, node, fault, context.what());
-        if (setup_->supervisor == nullptr)
+        if (setup_->supervisor != nullptr) {
+          halt_on_error(
+              node, cycle,
+              {node.name(), name, context.what(),
+               fmt::format("memory fault: {} B asked for, {} B free, largest block {} B",
+                           fault.requested_bytes(), fault.free_bytes(), fault.largest_free_block()),
+               node.kernel().now()});
+        } else {
+          record_fault(cycle, node, fault, context.what());
           cycle.kernel->stop();
-        else
-          halt(node, cycle);
+        }
       } catch (const std::exception& error) {
-        if (!cycle.error)
-          cycle.error = fmt::format("process {} on {}: {}", name, node.name(), error.what());
-        cycle.kernel->stop();
+        // Under a supervisor a process's error is occam's run-time error: its module halts.
+        // Without one it is the program's own bug and ends the run.
+        if (setup_->supervisor != nullptr) {
+          halt_on_error(node, cycle,
+                        {node.name(), name, context.what(),
+                         fmt::format("run-time error: {}", error.what()), node.kernel().now()});
+        } else {
+          if (!cycle.error)
+            cycle.error = fmt::format("process {} on {}: {}", name, node.name(), error.what());
+          cycle.kernel->stop();
+        }
       }
       for (std::size_t k = 0; k < nav::kWorkKinds; ++k) {
         const auto kind = static_cast<nav::Work>(k);
@@ -161,12 +176,21 @@ void CycleRun::spawn_processes() {
 }
 
 // HaltOnError: the module stops at once (from an event: a node cannot hang itself from one of
-// its processes); this run cannot finish, and the fault is kept with the halts.
-void CycleRun::halt(emulator::Node& node, CycleState& cycle) {
+// its processes); this run cannot finish, and the error is kept with the halts.
+void CycleRun::halt_on_error(emulator::Node& node, CycleState& cycle, ModuleHalt halt) {
   cycle.killed = true;
-  halts_.push_back(*cycle.fault);
-  cycle.fault.reset();
+  halts_.push_back(std::move(halt));
   net_.kernel.schedule_after(0, emulator::event_priority::power, [&node] { node.hang(); });
+}
+
+void CycleRun::halt(const std::string& node, const std::string& what, const std::string& cause) {
+  if (net_.kernel.current() != nullptr)
+    throw std::logic_error("a module is halted from an event, not from a process");
+  emulator::Node& module = net_.node(node);
+  if (!module.running())
+    return;
+  halts_.push_back({node, {}, what, cause, net_.kernel.now()});
+  module.hang();
 }
 
 // The program ends when its last process does.

@@ -33,7 +33,7 @@ public:
   CycleState& state() { return *states_.back(); }
   const Placement& placement() const { return placement_; }
   int restarts() const { return restarts_; }
-  const std::vector<MemoryFaultFigures>& halts() const { return halts_; }
+  const std::vector<ModuleHalt>& halts() const { return halts_; }
   bool finished() const { return finished_; }
   const std::optional<std::string>& abandoned() const { return abandoned_; }
 
@@ -47,6 +47,7 @@ public:
   std::size_t code_bytes(const std::string& node) const override;
   const std::string& node_of(const std::string& process) const override;
   void restart(const std::map<std::string, std::string>& moved) override;
+  void halt(const std::string& node, const std::string& what, const std::string& cause) override;
   void abandon(const std::string& why) override;
   bool program_finished() const override { return finished_; }
   /// When the program's last process ended; 0 if it has not.
@@ -59,7 +60,7 @@ private:
   void kill_program();
   void reset_device_link(const std::string& node);
   void process_ended();
-  void halt(emulator::Node& node, CycleState& cycle);
+  void halt_on_error(emulator::Node& node, CycleState& cycle, ModuleHalt halt);
 
   const CycleInput* input_;
   const CycleSetup* setup_;
@@ -73,7 +74,7 @@ private:
   bool finished_ = false;
   bool killing_ = false;
   emulator::Tick finished_at_ = 0;
-  std::vector<MemoryFaultFigures> halts_;
+  std::vector<ModuleHalt> halts_;
   std::optional<std::string> abandoned_;
   CycleNetwork net_; // last: its nodes, and the processes on them, go first
 };

@@ -93,8 +93,9 @@ public:
   nav::DynamicMeter& recompute_meter() { return recompute_meter_; }
   const EmulatedMeter& emulated_recompute_meter() const { return recompute_meter_; }
   std::pmr::memory_resource* memory() { return &node_->memory(); }
-  /// Names the buffer or kernel the next allocations are for.
-  void doing(std::string what) { what_ = std::move(what); }
+  /// Names the buffer or kernel the next allocations are for (in fault messages, and on the
+  /// blocks, for reports of upsets).
+  void doing(std::string what);
   const std::string& what() const { return what_; }
   /// The stage starts (its input has arrived) / ends.
   void start_stage();

@@ -33,7 +33,7 @@ void EmulatedMeter::operator()(nav::Work kind, std::uint64_t count) {
     return;
   const emulator::Tick time = node_->cycles(count * cycles_per_unit(kind));
   charged_ += time;
-  node_->kernel().consume(time);
+  node_->consume(time);
 }
 
 } // namespace marsokhod::occam_port

@@ -26,6 +26,11 @@ ProcessContext::ProcessContext(CycleState& cycle, emulator::Node& node, std::str
       recompute_meter_(node, node.memory().default_placement() != emulator::Placement::on_chip,
                        cycle.occam_style) {}
 
+void ProcessContext::doing(std::string what) {
+  what_ = std::move(what);
+  node_->memory().set_label(name_, what_);
+}
+
 void ProcessContext::start_stage() {
   if (started_)
     return;

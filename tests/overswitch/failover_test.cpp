@@ -95,8 +95,13 @@ protected:
   std::unique_ptr<FailoverSupervisor> supervisor_;
 };
 
-Fault fault(Fault::Kind kind, const std::string& module, Tick at) {
-  return Fault{kind, module, "", at};
+Fault fault(Fault::Kind kind, const std::string& module, Tick at, const std::string& stage = "") {
+  Fault f;
+  f.kind = kind;
+  f.module = module;
+  f.stage = stage;
+  f.offset = at;
+  return f;
 }
 
 TEST_F(FailoverTest, FaultFreeRunFinishesWithoutAnOverswitchEvent) {
@@ -135,7 +140,7 @@ TEST_F(FailoverTest, HangIsFoundOneTimeoutAfterTheLastKickAndTheSpareBootsInItsS
 TEST_F(FailoverTest, PowerLossAtANamedStageMovesThatModulesShareToTheSpare) {
   FailoverSupervisor* supervisor = nullptr;
   const CycleEmulation run =
-      emulate({Fault{Fault::Kind::power_loss, "module0", "matching", 500 * kMs}}, supervisor);
+      emulate({fault(Fault::Kind::power_loss, "module0", 500 * kMs, "matching")}, supervisor);
   ASSERT_EQ(supervisor->injected().size(), 1U);
   const Tick lost = supervisor->injected()[0].at;
   ASSERT_EQ(supervisor->overswitch().failovers().size(), 1U);
@@ -211,7 +216,7 @@ TEST_F(FailoverTest, SpareThatDoesNotBootIsFailedAfterItsAllowanceAndTheNextOneT
 TEST_F(FailoverTest, LeakHaltsTheModuleAtItsNextBufferAndItsWatchdogFailsItOver) {
   FailoverSupervisor* supervisor = nullptr;
   const CycleEmulation run =
-      emulate({Fault{Fault::Kind::leak, "module1", "zones", 100 * kMs}}, supervisor);
+      emulate({fault(Fault::Kind::leak, "module1", 100 * kMs, "zones")}, supervisor);
   // The leak takes module1's free memory; the next buffer there fails and the module halts
   // (HaltOnError); its heartbeat stops with it.
   ASSERT_EQ(run.halts.size(), 1U);

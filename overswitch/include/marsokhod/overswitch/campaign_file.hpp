@@ -3,6 +3,7 @@
 #pragma once
 
 #include "marsokhod/overswitch/fault.hpp"
+#include "marsokhod/overswitch/protection.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -36,7 +37,17 @@ struct FaultMix {
   /// The strike time is uniform over this share of the fault-free cycle, from its start.
   double from_share = 0.0;
   double to_share = 1.0;
+  /// Upsets and stuck bits: where the bit is drawn.
+  MemoryTarget memory;
   int line = 0;
+};
+
+/// An environment's upset rate: each run injects one upset, and the rate scales the outcome of
+/// one upset to a year of operations (docs/faults.md, "Upset rates").
+struct UpsetRate {
+  std::string name; ///< a preset's name, or "custom"
+  double per_bit_per_day = 0.0;
+  std::string source; ///< where the preset's figure comes from
 };
 
 /// A whole campaign. Run k draws its scenario and fault from (seed, k) alone, so that any run
@@ -52,6 +63,9 @@ struct CampaignSpec {
   std::string light = "high-sun";
   double rock_cover = 0.10;
   std::vector<FaultMix> faults;
+  Protection protection;
+  /// With an upset rate the summary gives the expected unsafe outcomes per year.
+  std::optional<UpsetRate> upset_rate;
   std::uint64_t runs = 0;
   /// Stop before `runs` once the unsafe rate's 95 % interval is narrower than this.
   std::optional<double> ci_width;

@@ -3,7 +3,9 @@
 
 #include "marsokhod/occam_port/navigation/cycle_supervisor.hpp"
 #include "marsokhod/overswitch/fault.hpp"
+#include "marsokhod/overswitch/memory_strike.hpp"
 #include "marsokhod/overswitch/overswitch.hpp"
+#include "marsokhod/overswitch/protection.hpp"
 
 #include <memory>
 #include <optional>
@@ -16,6 +18,10 @@ namespace marsokhod::overswitch {
 struct InjectedFault {
   Fault fault;
   emulator::Tick at = 0;
+  /// A memory fault: the bit it struck and what that did.
+  std::optional<MemoryHit> hit;
+  /// What the fault did at once ("module hung: its code was struck", "EDAC corrected it"...).
+  std::string effect;
 };
 
 /// Supervises one emulated cycle on a platform with an [overswitch] table: starts a heartbeat
@@ -24,8 +30,10 @@ struct InjectedFault {
 /// cycle with the failed module's processes on the spare; a safe stop abandons the cycle.
 class FailoverSupervisor final : public occam_port::CycleSupervisor {
 public:
-  /// std::invalid_argument when the platform has no [overswitch] table.
-  FailoverSupervisor(const emulator::PlatformSpec& platform, std::vector<Fault> faults);
+  /// std::invalid_argument when the platform has no [overswitch] table. The platform must
+  /// already carry the protection's costs (protected_platform).
+  FailoverSupervisor(const emulator::PlatformSpec& platform, std::vector<Fault> faults,
+                     Protection protection = {});
   FailoverSupervisor(const FailoverSupervisor&) = delete;
   FailoverSupervisor& operator=(const FailoverSupervisor&) = delete;
   ~FailoverSupervisor() override;
@@ -47,13 +55,16 @@ public:
 private:
   void schedule(const Fault& fault, emulator::Tick at);
   void inject(const Fault& fault);
-  void leak(emulator::Node& node);
+  void leak(emulator::Node& node, const Fault& fault);
+  void strike(emulator::Node& node, InjectedFault& injected);
+  void protect(emulator::Node& module);
   void boot(emulator::Node& spare, emulator::Node& from, std::function<void()> done);
   void booted(const Failover& failover);
   void wind_down();
 
   const emulator::PlatformSpec* platform_;
   std::vector<Fault> faults_;
+  Protection protection_;
   std::vector<bool> scheduled_;
   occam_port::CycleControl* control_ = nullptr;
   std::unique_ptr<Overswitch> overswitch_;

@@ -47,7 +47,20 @@ enum class Placement : std::uint8_t {
 };
 
 /// What a block is for; workspaces are the processes' stacks in occam terms.
-enum class BlockKind : std::uint8_t { data, workspace };
+enum class BlockKind : std::uint8_t { data, workspace, code };
+
+const char* to_string(BlockKind kind);
+
+/// One allocated block as reports of upsets name it: where it is, whose, and what for.
+struct BlockInfo {
+  Address start = 0;
+  std::size_t bytes = 0;
+  std::string owner;
+  /// What the block holds ("left image, 128 x 128 x 1 B"); empty when its owner never said.
+  std::string label;
+  BlockKind kind = BlockKind::data;
+  bool on_chip = false;
+};
 
 /// A node's memory: real bytes for on-chip RAM and for the external arena (mapped zeroed, backed
 /// by host memory only where touched, so that its size costs nothing up front), handed out by a
@@ -94,6 +107,10 @@ public:
   std::string current_owner() const;
   void set_owner_provider(std::function<std::string()> provider);
 
+  /// Names what `owner`'s next blocks hold (a buffer's name), until it names something else;
+  /// reports of upsets say which buffer they struck.
+  void set_label(std::string_view owner, std::string_view label);
+
   /// Sets the owner the std::pmr interface charges for as long as it lives.
   class OwnerScope {
   public:
@@ -121,6 +138,11 @@ public:
   /// would; std::out_of_range for an address outside populated memory or a bit above 7.
   void flip_bit(Address address, unsigned bit);
 
+  /// The block holding `address`; nothing when the address is free, reserved or outside.
+  std::optional<BlockInfo> block_at(Address address) const;
+  /// Every allocated block, in address order.
+  std::vector<BlockInfo> blocks() const;
+
   // Accounting.
   const ArenaUsage& usage() const { return usage_; }
   /// Per-owner figures, in order of each owner's first allocation.
@@ -144,6 +166,7 @@ private:
     std::size_t owner;
     BlockKind kind;
     bool on_chip;
+    std::size_t label;
   };
   /// Free blocks of one region, start offset -> size; address order makes the scan first-fit.
   using FreeList = std::map<std::size_t, std::size_t>;
@@ -152,6 +175,8 @@ private:
                                             std::size_t alignment);
   static void give_back(FreeList& list, std::size_t offset, std::size_t size);
   std::size_t owner_index(std::string_view owner);
+  std::size_t label_index(std::string_view label);
+  BlockInfo info(std::size_t offset, const Block& block) const;
   void account_allocation(const Block& block);
   void account_free(const Block& block);
   [[noreturn]] void fault(std::size_t bytes, std::size_t alignment, Placement placement,
@@ -169,6 +194,10 @@ private:
   std::map<std::size_t, Block> blocks_;
   std::vector<OwnerUsage> owner_usage_;
   std::unordered_map<std::string, std::size_t> owner_ids_;
+  /// Labels, interned (index 0: none); each owner's current one, by owner index.
+  std::vector<std::string> labels_{std::string()};
+  std::unordered_map<std::string, std::size_t> label_ids_;
+  std::vector<std::size_t> owner_labels_;
   std::vector<std::string> owner_scopes_;
   std::function<std::string()> owner_provider_;
   std::function<void(const ArenaUsage&)> usage_listener_;

@@ -3,6 +3,7 @@
 
 #include "marsokhod/emulator/kernel/kernel.hpp"
 #include "marsokhod/emulator/memory/memory_arena.hpp"
+#include "marsokhod/emulator/memory/memory_upsets.hpp"
 #include "marsokhod/emulator/node/cost_table.hpp"
 #include "marsokhod/emulator/node/cpu.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
@@ -49,6 +50,8 @@ public:
   std::uint64_t serial() const { return serial_; }
   Cpu& cpu() { return *cpu_; }
   MemoryArena& memory() { return *memory_; }
+  /// Upsets and stuck bits in the node's memory, and its EDAC.
+  MemoryUpsets& upsets() { return *upsets_; }
 
   /// The node of the process executing now; std::logic_error outside a process on a node.
   static Node& current() {
@@ -64,7 +67,14 @@ public:
   std::uint64_t cycles_of(const InstructionMix& mix) const { return spec_.cpu.costs.cycles(mix); }
   /// Charges the current process (which must run on this node) for the mix: one compute chunk.
   void compute(const InstructionMix& mix);
-  void compute_cycles(std::uint64_t n) { kernel_->consume(cycles(n)); }
+  void compute_cycles(std::uint64_t n) { consume(cycles(n)); }
+  /// Charges the current process `time` of computing. A stuck memory cell undoes whatever the
+  /// computing wrote to it, so it is forced back first.
+  void consume(Tick time) {
+    if (upsets_->has_stuck())
+      upsets_->reassert_stuck();
+    kernel_->consume(time);
+  }
   /// Charges `times` executions of one instruction with `units_each` (words, bits).
   void execute(Instruction instruction, std::uint64_t times = 1, std::uint64_t units_each = 0) {
     const InstructionCost& cost = spec_.cpu.costs[instruction];
@@ -111,6 +121,7 @@ private:
   NodeSpec spec_;
   std::unique_ptr<Cpu> cpu_;
   std::unique_ptr<MemoryArena> memory_;
+  std::unique_ptr<MemoryUpsets> upsets_;
   std::array<Attachment, kLinks> links_{};
   bool powered_ = true;
   bool hung_ = false;

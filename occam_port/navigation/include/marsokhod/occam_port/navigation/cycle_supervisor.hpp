@@ -40,6 +40,10 @@ public:
   /// process of a node named in `moved` placed on its replacement. The replacement must be
   /// running and hold the code (booted); channels go on the wires joining the new nodes.
   virtual void restart(const std::map<std::string, std::string>& moved) = 0;
+  /// Halts `node` at once, as HaltOnError does on an error the hardware flags (the EDAC's
+  /// uncorrectable error): its processes stop and its links go silent; the halt is reported
+  /// with the cycle's others. Only from an event.
+  virtual void halt(const std::string& node, const std::string& what, const std::string& cause) = 0;
   /// Ends the cycle unfinished (a safe stop): kills the program's processes and stops the run.
   virtual void abandon(const std::string& why) = 0;
   /// The program's last process has ended (the cycle is done; a restart makes no sense).

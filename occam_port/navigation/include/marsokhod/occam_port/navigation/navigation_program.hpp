@@ -94,6 +94,17 @@ struct MemoryFaultFigures {
   emulator::Tick time = 0; ///< when the request failed
 };
 
+/// A module halted on an error, as a T805 with HaltOnError set does (only under a supervisor):
+/// a memory fault, a run-time error of a process (a range check, a channel protocol broken by
+/// corrupted data), or an uncorrectable memory error its EDAC flagged.
+struct ModuleHalt {
+  std::string node;
+  std::string process; ///< empty when no process raised it (the EDAC)
+  std::string what;    ///< the buffer or kernel the process was at, or the word
+  std::string cause;   ///< "memory fault: ...", "run-time error: ...", "EDAC: ..."
+  emulator::Tick time = 0;
+};
+
 /// Everything one emulated cycle produced and measured.
 struct CycleEmulation {
   /// From the cycle's start to the last process's end (or to the fault, the safe stop or the
@@ -106,9 +117,9 @@ struct CycleEmulation {
   std::vector<LinkFigures> links;
   MemoryPlan plan;
   std::optional<MemoryFaultFigures> memory_fault;
-  /// Under a supervisor a memory fault does not end the run: the module halts, as a T805 with
-  /// HaltOnError set does on an error, and its watchdog takes over. Each such halt, in order.
-  std::vector<MemoryFaultFigures> halts;
+  /// Under a supervisor an error does not end the run: the module halts, as a T805 with
+  /// HaltOnError set does, and its watchdog takes over. Each such halt, in order.
+  std::vector<ModuleHalt> halts;
   /// The cycle's products, read out of the nodes' memories as a debugger would (not charged);
   /// absent after a memory fault.
   std::optional<nav::NavigationResult> result;
