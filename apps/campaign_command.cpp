@@ -36,6 +36,7 @@ struct CampaignCli {
   int jobs = 1;
   fs::path out = "campaign-out";
   std::optional<std::uint64_t> replay;
+  bool no_skip = false;
   bool json = false;
 };
 
@@ -66,8 +67,7 @@ emulator::PlatformSpec campaign_platform(const overswitch::CampaignSpec& spec) {
       spec.platform.find('/') != std::string::npos || spec.platform.ends_with(".toml");
   const std::string name =
       is_path ? (fs::path(spec.source).parent_path() / spec.platform).string() : spec.platform;
-  emulator::PlatformSpec platform =
-      overswitch::protected_platform(platform_for(name), spec.protection);
+  emulator::PlatformSpec platform = platform_for(name);
   if (!platform.overswitch)
     throw CommandError(fmt::format("{}: platform {} has no [overswitch] table, so no module can "
                                    "fail over",
@@ -134,7 +134,8 @@ std::vector<std::string> run_campaign(const CampaignCli& cli, const overswitch::
     const std::uint64_t first = records.size();
     const std::uint64_t last = spec.ci_width ? std::min(runs, first + kBatch) : runs;
     const std::vector<std::string> batch = run_in_jobs(
-        first, last, cli.jobs, [&runner](std::uint64_t k) { return runner.run(k, nullptr).dump(); },
+        first, last, cli.jobs,
+        [&runner, &cli](std::uint64_t k) { return runner.run(k, nullptr, !cli.no_skip).dump(); },
         [&bar, first](std::uint64_t done) { bar.update(first + done); });
     for (const std::string& line : batch) {
       const nlohmann::json record = nlohmann::json::parse(line);
@@ -178,18 +179,30 @@ int run(const CampaignCli& cli) {
   }
   const CampaignTally t = tally(records);
   io::write_file_atomically(cli.out / "runs.jsonl", jsonl);
-  const nlohmann::ordered_json summary = summary_json(spec, t, per_minute);
+  CampaignFacts facts = runner.facts();
+  if (!cli.no_skip)
+    for (std::uint64_t k = 0; k < lines.size(); ++k)
+      facts.skipped_runs += runner.skippable(k) ? 1 : 0;
+  const nlohmann::ordered_json summary = summary_json(spec, facts, t, per_minute);
+  const std::string markdown = summary_markdown(spec, facts, t, per_minute);
   io::write_file_atomically(cli.out / "summary.json", summary.dump(2) + "\n");
-  io::write_file_atomically(cli.out / "summary.md", summary_markdown(spec, t, per_minute));
+  io::write_file_atomically(cli.out / "summary.md", markdown);
   imaging::write_image(cli.out / "outcomes.png", outcomes_chart(t));
   imaging::write_image(cli.out / "latency.png", latency_chart(t));
+  std::string charts = "outcomes.png and latency.png";
+  if (!t.by_region.empty()) {
+    imaging::write_image(cli.out / "regions.png",
+                         memory_chart(t.by_region, "Outcomes of memory faults by region"));
+    imaging::write_image(cli.out / "buffers.png",
+                         memory_chart(t.by_buffer, "Outcomes of memory faults by buffer"));
+    charts = "outcomes.png, regions.png, buffers.png and latency.png";
+  }
   if (cli.json) {
     fmt::print("{}\n", summary.dump(2));
     return kSuccess;
   }
-  fmt::print("{}", summary_markdown(spec, t, per_minute));
-  fmt::print("\nwrote runs.jsonl, summary.json, summary.md, outcomes.png and latency.png to {}\n",
-             cli.out.string());
+  fmt::print("{}", markdown);
+  fmt::print("\nwrote runs.jsonl, summary.json, summary.md, {} to {}\n", charts, cli.out.string());
   return kSuccess;
 }
 
@@ -214,6 +227,10 @@ Command make_campaign_command(CLI::App& parent) {
                   "Repeat run K alone: its record (as in runs.jsonl) and its trace into the output "
                   "folder")
       ->transform(integer_between<std::uint64_t>(0, overswitch::kMaxCampaignRuns - 1));
+  app->add_flag("--no-skip", cli->no_skip,
+                "Emulate every run, also those whose fault cannot change them (an upset in free "
+                "memory or corrected by the EDAC), which are otherwise judged from the fault-free "
+                "run with the same record");
   app->add_flag("--json", cli->json, "Print the summary (or the replayed record) as JSON");
   return {app, [cli] { return run(*cli); }};
 }

@@ -58,6 +58,7 @@ std::unique_ptr<CampaignScene> supervised_scene(std::uint64_t seed, const SceneC
   scene->truth_terrain = nav::reconstruct_terrain(scene->frame.truth.disparity, *scene->rig,
                                                   scene->description.placement.attitude);
   overswitch::FailoverSupervisor fault_free(platform, {}, protection);
+  fault_free.record_memory(scene->timeline);
   scene->golden.run = emulate_supervised(*scene, platform, placement, fault_free, nullptr);
   if (!scene->golden.run.finished)
     throw CommandError(fmt::format("world seed {}: the fault-free cycle did not finish: {}", seed,
@@ -94,16 +95,43 @@ CampaignRunner::CampaignRunner(const overswitch::CampaignSpec& spec,
                                const emu::PlatformSpec& platform,
                                const occam_port::Placement& placement,
                                const std::function<void(std::size_t done)>& progress)
-    : spec_(&spec), platform_(&platform), placement_(&placement) {
+    : spec_(&spec), platform_(overswitch::protected_platform(platform, spec.protection)),
+      placement_(&placement) {
   check_modules(spec, platform);
   for (const overswitch::FaultMix& mix : spec.faults)
     total_weight_ += mix.weight;
+  const SceneChanges changes{spec.light, spec.rock_cover};
   for (const std::uint64_t seed : spec.world_seeds) {
-    scenes_.push_back(supervised_scene(seed, SceneChanges{spec.light, spec.rock_cover}, platform,
-                                       placement, spec.protection));
+    scenes_.push_back(supervised_scene(seed, changes, platform_, placement, spec.protection));
+    CampaignScene& scene = *scenes_.back();
+    scene.unprotected_cycle = scene.golden.run.emulated;
+    if (overswitch::any(spec.protection)) {
+      overswitch::FailoverSupervisor bare(platform, {});
+      scene.unprotected_cycle =
+          emulate_supervised(scene, platform, placement, bare, nullptr).emulated;
+    }
     if (progress)
       progress(scenes_.size());
   }
+}
+
+// The bits an upset may strike: all the memory of the modules powered at the start, and the
+// EDAC's 7 check bits per word of external memory.
+CampaignFacts CampaignRunner::facts() const {
+  CampaignFacts f;
+  for (const std::string& module : powered_modules(platform_)) {
+    const emu::MemoryConfig& memory = platform_.find_node(module)->memory;
+    f.memory_bits += 8 * (memory.on_chip_bytes + memory.external_bytes);
+    if (spec_->protection.edac)
+      f.memory_bits += memory.external_bytes / emu::MemoryArena::kWordBytes * emu::kEdacCheckBits;
+  }
+  for (const auto& scene : scenes_) {
+    f.cycle_s += emu::to_seconds(scene->golden.run.emulated);
+    f.unprotected_cycle_s += emu::to_seconds(scene->unprotected_cycle);
+  }
+  f.cycle_s /= static_cast<double>(scenes_.size());
+  f.unprotected_cycle_s /= static_cast<double>(scenes_.size());
+  return f;
 }
 
 // Kind by weight, then module, then the strike time over the fault-free cycle's share.
@@ -122,7 +150,7 @@ CampaignDraw CampaignRunner::draw(std::uint64_t run) const {
     pick -= candidate.weight;
   }
   const std::vector<std::string> modules =
-      mix->modules.empty() ? powered_modules(*platform_) : mix->modules;
+      mix->modules.empty() ? powered_modules(platform_) : mix->modules;
   d.fault.kind = mix->kind;
   d.fault.memory = mix->memory;
   d.fault.module = modules[random.below(modules.size())];
@@ -133,12 +161,53 @@ CampaignDraw CampaignRunner::draw(std::uint64_t run) const {
   return d;
 }
 
-nlohmann::ordered_json CampaignRunner::run(std::uint64_t run, emu::TraceSink* trace) const {
+// Only an upset is left alone by a clean write: a stuck cell forces its value back after it.
+std::optional<overswitch::InjectedFault> CampaignRunner::unchanging(const CampaignDraw& d) const {
+  if (d.fault.kind != overswitch::Fault::Kind::upset || !d.fault.stage.empty())
+    return std::nullopt;
+  const bool edac = spec_->protection.edac;
+  std::optional<overswitch::MemoryHit> hit =
+      overswitch::locate_before_strike(platform_.find_node(d.fault.module)->memory, edac, d.fault);
+  if (!hit || hit->reserved)
+    return std::nullopt;
+  const overswitch::MemoryTimeline::Holding holding =
+      scenes_[d.scene]->timeline.holding(d.fault.module, hit->address, d.fault.offset);
+  if (!holding.sure)
+    return std::nullopt;
+  hit->block = holding.block;
+  overswitch::InjectedFault fault{d.fault, d.fault.offset, hit, {}};
+  if (hit->check_bit || (edac && !hit->on_chip)) {
+    fault.hit->effect = emu::UpsetEffect::corrected;
+    fault.effect = "EDAC: corrected on every read";
+    return fault;
+  }
+  if (holding.block)
+    return std::nullopt;
+  fault.effect = "none: free memory";
+  return fault;
+}
+
+bool CampaignRunner::skippable(std::uint64_t run) const {
+  return unchanging(draw(run)).has_value();
+}
+
+nlohmann::ordered_json CampaignRunner::run(std::uint64_t run, emu::TraceSink* trace,
+                                           bool skip) const {
   const CampaignDraw d = draw(run);
   const CampaignScene& scene = *scenes_[d.scene];
-  overswitch::FailoverSupervisor supervisor(*platform_, {d.fault}, spec_->protection);
+  if (trace == nullptr && skip)
+    if (const std::optional<overswitch::InjectedFault> fault = unchanging(d)) {
+      nlohmann::ordered_json record;
+      record["run"] = run;
+      record["world_seed"] = scene.world_seed;
+      record["fault"] = injected_json(*fault);
+      record.update(verdict_json(
+          judge_unchanged_run(scene.golden, fault->hit->effect == emu::UpsetEffect::corrected)));
+      return record;
+    }
+  overswitch::FailoverSupervisor supervisor(platform_, {d.fault}, spec_->protection);
   const occam_port::CycleEmulation emulated =
-      emulate_supervised(scene, *platform_, *placement_, supervisor, trace);
+      emulate_supervised(scene, platform_, *placement_, supervisor, trace);
   const FaultVerdict verdict =
       judge_fault_run(scene.golden, emulated, supervisor, crosses_obstacle(scene, emulated));
   nlohmann::ordered_json record;

@@ -150,6 +150,17 @@ FaultVerdict judge_fault_run(const GoldenRun& golden, const occam_port::CycleEmu
   return v;
 }
 
+FaultVerdict judge_unchanged_run(const GoldenRun& golden, bool edac_corrected) {
+  FaultVerdict v;
+  v.outcome = Outcome::masked;
+  v.detected = edac_corrected;
+  v.path_equals_golden = true;
+  v.golden_unsafe = golden.unsafe;
+  v.unsafe = golden.unsafe;
+  v.emulated_s = emu::to_seconds(golden.run.emulated);
+  return v;
+}
+
 nlohmann::ordered_json verdict_json(const FaultVerdict& v) {
   nlohmann::ordered_json j;
   j["outcome"] = to_string(v.outcome);

@@ -67,6 +67,10 @@ FaultVerdict judge_fault_run(const GoldenRun& golden, const occam_port::CycleEmu
                              const overswitch::FailoverSupervisor& supervisor,
                              bool crosses_obstacle);
 
+/// The verdict on a run its fault cannot have changed (an upset the EDAC corrects, one in memory
+/// no block holds): the fault-free run's, masked, and seen by the EDAC when it corrected it.
+FaultVerdict judge_unchanged_run(const GoldenRun& golden, bool edac_corrected);
+
 nlohmann::ordered_json verdict_json(const FaultVerdict& verdict);
 
 /// A fault as it struck: its spec, time, and for a memory fault the bit it hit, the region and

@@ -222,6 +222,20 @@ void read_upsets(Table& upsets, CampaignSpec& spec) {
   upsets.reject_unknown_keys();
 }
 
+// A rate strikes every bit alike: the per-year figure holds only for upsets drawn that way.
+void check_rate_mix(const CampaignSpec& spec) {
+  for (const FaultMix& mix : spec.faults) {
+    if (mix.kind != Fault::Kind::upset)
+      throw CampaignError(spec.source, mix.line, "kind",
+                          "with [upsets] every [[fault]] is an upset (kind = \"seu\"): the rate "
+                          "scales the outcome of one upset");
+    if (mix.memory.over != MemoryTarget::Over::memory || !mix.memory.buffer.empty())
+      throw CampaignError(spec.source, mix.line, "over",
+                          "with [upsets] an upset is drawn over every bit of memory (over = "
+                          "\"memory\", no buffer), as the rate strikes them");
+  }
+}
+
 void read_stop(Table& stop, CampaignSpec& spec) {
   spec.runs = static_cast<std::uint64_t>(
       stop.integer("runs", 1, static_cast<std::int64_t>(kMaxCampaignRuns), 1000));
@@ -260,6 +274,7 @@ CampaignSpec load_campaign(const std::filesystem::path& file) {
   if (top.get("upsets") != nullptr) {
     Table upsets(table_named(top, "upsets", true), spec, "[upsets]");
     read_upsets(upsets, spec);
+    check_rate_mix(spec);
   }
   Table stop(table_named(top, "stop", false), spec, "[stop]");
   read_stop(stop, spec);

@@ -48,6 +48,8 @@ void FailoverSupervisor::attach(occam_port::CycleControl& control) {
       overswitch_->kick(control_->node(node));
   });
   for (emulator::Node* module : modules) {
+    if (timeline_ != nullptr)
+      timeline_->record(module->name(), module->memory(), control.kernel());
     protect(*module);
     if (module->running())
       if (emulator::SharedOutput* output = control.device_output(module->name()))
@@ -86,6 +88,8 @@ void FailoverSupervisor::wind_down() {
 }
 
 void FailoverSupervisor::detach() {
+  if (timeline_ != nullptr)
+    timeline_->stop();
   if (overswitch_)
     overswitch_->stop();
   control_ = nullptr;

@@ -35,19 +35,25 @@ bool names(const emu::BlockInfo& block, const std::string& wanted) {
          lower(emu::to_string(block.kind)) == wanted;
 }
 
+bool over_all_memory(const MemoryTarget& target) {
+  return target.buffer.empty() && target.over == MemoryTarget::Over::memory;
+}
+
+std::vector<Segment> segments_of_memory(const emu::MemoryConfig& config, bool edac_external) {
+  std::vector<Segment> segments;
+  if (config.on_chip_bytes > 0)
+    segments.push_back({emu::MemoryArena::kOnChipBase, config.on_chip_bytes, false});
+  if (config.external_bytes > 0)
+    segments.push_back({emu::MemoryArena::kExternalBase, config.external_bytes, edac_external});
+  return segments;
+}
+
 std::vector<Segment> segments_of(emu::Node& module, const MemoryTarget& target) {
   const emu::MemoryArena& memory = module.memory();
   const emu::MemoryUpsets& upsets = module.upsets();
+  if (over_all_memory(target))
+    return segments_of_memory(memory.config(), upsets.edac_on_external());
   std::vector<Segment> segments;
-  if (target.buffer.empty() && target.over == MemoryTarget::Over::memory) {
-    const emu::MemoryConfig& config = memory.config();
-    if (config.on_chip_bytes > 0)
-      segments.push_back({emu::MemoryArena::kOnChipBase, config.on_chip_bytes, false});
-    if (config.external_bytes > 0)
-      segments.push_back({emu::MemoryArena::kExternalBase, config.external_bytes,
-                          upsets.protects(emu::MemoryArena::kExternalBase)});
-    return segments;
-  }
   const std::string wanted = lower(target.buffer);
   for (const emu::BlockInfo& block : memory.blocks())
     if (wanted.empty() || names(block, wanted))
@@ -90,6 +96,12 @@ void draw_bit(MemoryHit& hit, const std::vector<Segment>& segments, const Fault&
     hit.check_bit = true;
     return;
   }
+}
+
+void place(MemoryHit& hit, const emu::MemoryConfig& config) {
+  hit.on_chip = hit.address - emu::MemoryArena::kOnChipBase < config.on_chip_bytes;
+  hit.reserved =
+      hit.on_chip && hit.address - emu::MemoryArena::kOnChipBase < config.reserved_on_chip_bytes;
 }
 
 void locate(MemoryHit& hit, emu::Node& module, const Fault& fault) {
@@ -142,13 +154,26 @@ std::string MemoryHit::buffer() const {
   return block->label.empty() ? block->owner + " data" : block->label;
 }
 
+std::optional<MemoryHit> locate_before_strike(const emu::MemoryConfig& config, bool edac_external,
+                                              const Fault& fault) {
+  if (!is_memory_fault(fault.kind) || !(fault.memory.address || over_all_memory(fault.memory)))
+    return std::nullopt;
+  MemoryHit hit;
+  if (fault.memory.address) {
+    hit.address = *fault.memory.address;
+    hit.bit = fault.memory.bit.value_or(0);
+  } else {
+    draw_bit(hit, segments_of_memory(config, edac_external), fault);
+  }
+  place(hit, config);
+  return hit;
+}
+
 MemoryHit strike_memory(emu::Node& module, const Fault& fault) {
   MemoryHit hit;
   locate(hit, module, fault);
   const emu::MemoryArena& memory = module.memory();
-  hit.on_chip = memory.is_on_chip(hit.address);
-  hit.reserved = hit.on_chip && hit.address - emu::MemoryArena::kOnChipBase <
-                                    memory.config().reserved_on_chip_bytes;
+  place(hit, memory.config());
   hit.block = memory.block_at(hit.address);
   emu::MemoryUpsets& upsets = module.upsets();
   if (fault.kind == Fault::Kind::stuck)

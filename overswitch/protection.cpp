@@ -6,6 +6,10 @@
 
 namespace marsokhod::overswitch {
 
+bool any(const Protection& protection) {
+  return protection.edac || protection.link_checksums || protection.nav_check;
+}
+
 emulator::PlatformSpec protected_platform(const emulator::PlatformSpec& platform,
                                           const Protection& protection) {
   emulator::PlatformSpec out = platform;

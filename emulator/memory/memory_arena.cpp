@@ -106,7 +106,10 @@ Address MemoryArena::allocate_block(std::size_t bytes, std::size_t alignment, Pl
   const Block block{size, owner_id, kind, on_chip, label};
   blocks_.emplace(*offset, block);
   account_allocation(block);
-  return kOnChipBase + static_cast<Address>(*offset);
+  const Address start = kOnChipBase + static_cast<Address>(*offset);
+  if (block_listener_)
+    block_listener_(start, size, true);
+  return start;
 }
 
 void MemoryArena::free_block(Address address) {
@@ -119,6 +122,8 @@ void MemoryArena::free_block(Address address) {
   blocks_.erase(found);
   give_back(block.on_chip ? on_chip_free_ : external_free_, offset, block.size);
   account_free(block);
+  if (block_listener_)
+    block_listener_(address, block.size, false);
 }
 
 Address MemoryArena::reserve_workspace(std::string_view process, std::size_t bytes) {
@@ -309,6 +314,11 @@ std::size_t MemoryArena::largest_free_block(Placement placement) const {
 
 void MemoryArena::set_usage_listener(std::function<void(const ArenaUsage&)> listener) {
   usage_listener_ = std::move(listener);
+}
+
+void MemoryArena::set_block_listener(
+    std::function<void(Address start, std::size_t bytes, bool allocated)> listener) {
+  block_listener_ = std::move(listener);
 }
 
 void MemoryArena::set_fault_listener(std::function<void(const MemoryFault&)> listener) {

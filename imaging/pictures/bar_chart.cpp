@@ -18,8 +18,16 @@ namespace {
 
 using namespace detail; // the strokes
 
-constexpr std::array<Rgb, 4> kSeries{
-    {{127, 127, 127}, {31, 119, 180}, {255, 127, 14}, {44, 160, 44}}};
+// The categorical palette of matplotlib's tab10, grey first; the fifth is red, so that a chart of
+// outcome classes in their order shows "unsafe" in red.
+constexpr std::array<Rgb, 8> kSeries{{{127, 127, 127},
+                                      {31, 119, 180},
+                                      {255, 127, 14},
+                                      {44, 160, 44},
+                                      {214, 39, 40},
+                                      {148, 103, 189},
+                                      {140, 86, 75},
+                                      {227, 119, 194}}};
 
 void check(const BarChart& chart) {
   if (chart.series.size() > kSeries.size())

@@ -93,9 +93,9 @@ TEST(BarChart, RefusesValuesThatDoNotMatchTheSeriesOrAreNegativeOrNotFinite) {
   infinite.groups[1].values[0] = std::numeric_limits<double>::infinity();
   EXPECT_THROW(draw_bar_chart(infinite), std::invalid_argument);
   BarChart many = paper_and_model();
-  many.series = {"a", "b", "c", "d", "e"};
+  many.series = {"a", "b", "c", "d", "e", "f", "g", "h", "i"};
   for (BarChart::Group& g : many.groups)
-    g.values.resize(5, 1.0);
+    g.values.resize(9, 1.0);
   EXPECT_THROW(draw_bar_chart(many), std::invalid_argument);
 }
 

@@ -4,6 +4,7 @@
 #include "marsokhod/occam_port/navigation/cycle_supervisor.hpp"
 #include "marsokhod/overswitch/fault.hpp"
 #include "marsokhod/overswitch/memory_strike.hpp"
+#include "marsokhod/overswitch/memory_timeline.hpp"
 #include "marsokhod/overswitch/overswitch.hpp"
 #include "marsokhod/overswitch/protection.hpp"
 
@@ -37,6 +38,9 @@ public:
   FailoverSupervisor(const FailoverSupervisor&) = delete;
   FailoverSupervisor& operator=(const FailoverSupervisor&) = delete;
   ~FailoverSupervisor() override;
+
+  /// Records the modules' blocks over the run into `timeline` (call before the run).
+  void record_memory(MemoryTimeline& timeline) { timeline_ = &timeline; }
 
   void attach(occam_port::CycleControl& control) override;
   void stage_started(const std::string& process, emulator::Tick at) override;
@@ -73,6 +77,7 @@ private:
   std::vector<std::string> vacated_;
   std::vector<InjectedFault> injected_;
   std::optional<std::string> error_;
+  MemoryTimeline* timeline_ = nullptr;
   /// Tells the heartbeats to end at their next beat.
   bool heartbeats_stop_ = false;
 };

@@ -46,4 +46,10 @@ public:
 /// EDAC covers. Throws MemoryTargetError.
 MemoryHit strike_memory(emulator::Node& module, const Fault& fault);
 
+/// Where strike_memory will strike, worked out before the run, for a fault whose bit does not
+/// depend on what the memory holds (an address, or a draw over all memory): the same bit, its
+/// block unknown; nothing for the other faults. `edac_external` as the module will have it.
+std::optional<MemoryHit> locate_before_strike(const emulator::MemoryConfig& config,
+                                              bool edac_external, const Fault& fault);
+
 } // namespace marsokhod::overswitch

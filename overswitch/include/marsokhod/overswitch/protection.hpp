@@ -25,6 +25,9 @@ struct Protection {
   bool nav_check = false;
 };
 
+/// Something is switched on.
+bool any(const Protection& protection);
+
 /// Wait states the EDAC adds to every external access of a module: a flow-through SEC-DED unit
 /// sits in the data path, and the IDT49C460A (IDT data sheet DSC-9017, August 1995) takes at
 /// most 36 ns from data in to corrected data out, more than one 33.3 ns cycle of a T805-30:

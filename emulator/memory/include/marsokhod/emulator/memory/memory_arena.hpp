@@ -152,6 +152,9 @@ public:
 
   /// Called after every change of the bytes in use (allocation or free).
   void set_usage_listener(std::function<void(const ArenaUsage&)> listener);
+  /// Called after each block is allocated (true) or freed (false), with its start and bytes.
+  void set_block_listener(
+      std::function<void(Address start, std::size_t bytes, bool allocated)> listener);
   /// Called with each memory fault just before it is thrown.
   void set_fault_listener(std::function<void(const MemoryFault&)> listener);
 
@@ -202,6 +205,7 @@ private:
   std::function<std::string()> owner_provider_;
   std::function<void(const ArenaUsage&)> usage_listener_;
   std::function<void(const MemoryFault&)> fault_listener_;
+  std::function<void(Address, std::size_t, bool)> block_listener_;
   Placement default_placement_ = Placement::external;
   ArenaUsage usage_;
 };
