@@ -78,10 +78,7 @@ void print_verdict(const FaultVerdict& v, const overswitch::FailoverSupervisor& 
 
 int run_fault(const FaultCli& cli) {
   const emu::PlatformSpec platform = platform_for(cli.platform);
-  if (!platform.overswitch)
-    throw CommandError(fmt::format("{}: platform {} has no [overswitch] table, so no module can "
-                                   "fail over (the onboard platform has one)",
-                                   platform.source, platform.name));
+  require_overswitch(platform, platform.source);
   const std::vector<overswitch::Fault> faults = parse_faults(cli, platform);
   const occam_port::Placement placement =
       occam_port::load_placement(occam_port::default_placement_file(platform), platform,
