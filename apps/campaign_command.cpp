@@ -68,10 +68,7 @@ emulator::PlatformSpec campaign_platform(const overswitch::CampaignSpec& spec) {
   const std::string name =
       is_path ? (fs::path(spec.source).parent_path() / spec.platform).string() : spec.platform;
   emulator::PlatformSpec platform = platform_for(name);
-  if (!platform.overswitch)
-    throw CommandError(fmt::format("{}: platform {} has no [overswitch] table, so no module can "
-                                   "fail over",
-                                   spec.source, platform.name));
+  require_overswitch(platform, spec.source);
   return platform;
 }
 

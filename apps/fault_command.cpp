@@ -106,10 +106,7 @@ int run_fault(const FaultCli& cli) {
   const overswitch::Protection protection = protection_of(cli);
   const emu::PlatformSpec platform =
       overswitch::protected_platform(platform_for(cli.platform), protection);
-  if (!platform.overswitch)
-    throw CommandError(fmt::format("{}: platform {} has no [overswitch] table, so no module can "
-                                   "fail over (the onboard platform has one)",
-                                   platform.source, platform.name));
+  require_overswitch(platform, platform.source);
   const std::vector<overswitch::Fault> faults = parse_faults(cli, platform);
   const occam_port::Placement placement =
       occam_port::load_placement(occam_port::default_placement_file(platform), platform,

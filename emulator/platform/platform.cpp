@@ -4,7 +4,7 @@
 
 #include "platform/platform_overswitch.hpp"
 #include "platform/platform_processor.hpp"
-#include "platform/platform_table_reader.hpp"
+#include "platform/platform_toml.hpp"
 
 #include "marsokhod/emulator/platform/platform_limits.hpp"
 #include "marsokhod/io/numbers/checked_number.hpp"
@@ -21,21 +21,14 @@
 namespace marsokhod::emulator {
 namespace {
 
-using detail::TableReader;
+using detail::platform_table;
+using io::TomlTable;
 namespace limits = platform_limits;
-
-std::string describe(const std::string& file, int line, const std::string& key,
-                     const std::string& problem) {
-  std::string where = line > 0 ? fmt::format("{}:{}", file, line) : file;
-  if (key.empty())
-    return fmt::format("{}: {}", where, problem);
-  return fmt::format("{}: '{}': {}", where, key, problem);
-}
 
 /// Visits every table of an array of tables, failing on anything else in it and on more than
 /// `most` tables.
 template <typename Visit>
-void for_each_table(TableReader& top, std::string_view key, std::size_t most, Visit visit) {
+void for_each_table(TomlTable& top, std::string_view key, std::size_t most, Visit visit) {
   const toml::array* array = top.optional_array(key);
   if (array == nullptr)
     return;
@@ -56,7 +49,7 @@ bool is_name_character(char c) {
          c == '-';
 }
 
-std::string read_name(TableReader& reader) {
+std::string read_name(TomlTable& reader) {
   const std::string name = reader.string("name");
   if (name.empty() || name.size() > limits::kMaxNameLength ||
       !std::all_of(name.begin(), name.end(), is_name_character))
@@ -65,7 +58,7 @@ std::string read_name(TableReader& reader) {
   return name;
 }
 
-NodeSpec read_node(TableReader& node, const detail::ProcessorSpec& processor) {
+NodeSpec read_node(TomlTable& node, const detail::ProcessorSpec& processor) {
   NodeSpec spec;
   spec.line = static_cast<int>(node.table().source().begin.line);
   spec.name = read_name(node);
@@ -90,7 +83,7 @@ NodeSpec read_node(TableReader& node, const detail::ProcessorSpec& processor) {
   return spec;
 }
 
-DeviceKind read_device_kind(TableReader& device) {
+DeviceKind read_device_kind(TomlTable& device) {
   const std::string kind = device.string("kind");
   if (kind == "frame_store")
     return DeviceKind::frame_store;
@@ -99,7 +92,7 @@ DeviceKind read_device_kind(TableReader& device) {
   device.fail("kind", fmt::format("'{}' is not a device kind (frame_store, host)", kind));
 }
 
-DeviceSpec read_device(TableReader& device) {
+DeviceSpec read_device(TomlTable& device) {
   DeviceSpec spec;
   spec.line = static_cast<int>(device.table().source().begin.line);
   spec.name = read_name(device);
@@ -120,7 +113,7 @@ DeviceSpec read_device(TableReader& device) {
 }
 
 /// A link speed of the platform file: an integer the processor offers.
-int read_speed(TableReader& reader, std::string_view key, const detail::ProcessorSpec& processor,
+int read_speed(TomlTable& reader, std::string_view key, const detail::ProcessorSpec& processor,
                std::optional<int> fallback) {
   const int speed =
       fallback ? reader.optional_integer_in(key, limits::kMinLinkMbps, limits::kMaxLinkMbps,
@@ -157,7 +150,7 @@ public:
       owners_.emplace(device.name, Owner{device.links, true});
   }
 
-  WireSpec read(TableReader& wire, int default_speed) {
+  WireSpec read(TomlTable& wire, int default_speed) {
     WireSpec spec;
     spec.line = static_cast<int>(wire.table().source().begin.line);
     spec.a = endpoint(wire, "a");
@@ -174,7 +167,7 @@ private:
     bool device;
   };
 
-  LinkEndpoint endpoint(TableReader& wire, std::string_view key) {
+  LinkEndpoint endpoint(TomlTable& wire, std::string_view key) {
     const std::string text = wire.string(key);
     const auto dot = text.find('.');
     const std::optional<int> link = dot == std::string::npos
@@ -223,7 +216,7 @@ void check_unique_names(const PlatformSpec& platform) {
 
 /// The processor file a platform names; a file that cannot be read at all is reported at the
 /// platform's 'processor' key, so that the message shows where the path came from.
-detail::ProcessorSpec read_processor(TableReader& reader, const std::filesystem::path& platform) {
+detail::ProcessorSpec read_processor(TomlTable& reader, const std::filesystem::path& platform) {
   const std::string named = reader.string("processor");
   if (named.empty())
     reader.fail("processor", "must name the processor file (relative to this file)");
@@ -236,11 +229,6 @@ detail::ProcessorSpec read_processor(TableReader& reader, const std::filesystem:
 }
 
 } // namespace
-
-PlatformError::PlatformError(std::string file, int line, std::string key,
-                             const std::string& problem)
-    : std::runtime_error(describe(file, line, key, problem)), file_(std::move(file)), line_(line),
-      key_(std::move(key)) {}
 
 const char* to_string(DeviceKind kind) {
   return kind == DeviceKind::frame_store ? "frame_store" : "host";
@@ -286,11 +274,11 @@ PlatformSpec load_platform(const std::filesystem::path& file) {
   PlatformSpec platform;
   platform.source = file.string();
   const toml::table root = detail::parse_toml_file(platform.source, "platform file");
-  TableReader top(root, platform.source, "the platform file");
+  TomlTable top = platform_table(root, platform.source, "the platform file");
   const toml::table* header = top.optional_table("platform");
   if (header == nullptr)
     throw PlatformError(platform.source, 1, "platform", "missing [platform] table");
-  TableReader reader(*header, platform.source, "[platform]");
+  TomlTable reader = platform_table(*header, platform.source, "[platform]");
   platform.name = reader.string("name");
   platform.description = reader.optional_string("description").value_or("");
   const detail::ProcessorSpec processor = read_processor(reader, file);
@@ -302,13 +290,13 @@ PlatformSpec load_platform(const std::filesystem::path& file) {
   reader.reject_unknown_keys();
 
   for_each_table(top, "node", limits::kMaxNodes, [&](const toml::table& table) {
-    TableReader node(table, platform.source, "a [[node]]");
+    TomlTable node = platform_table(table, platform.source, "a [[node]]");
     platform.nodes.push_back(read_node(node, processor));
   });
   if (platform.nodes.empty())
     throw PlatformError(platform.source, 1, "node", "a platform needs at least one [[node]]");
   for_each_table(top, "device", limits::kMaxDevices, [&](const toml::table& table) {
-    TableReader device(table, platform.source, "a [[device]]");
+    TomlTable device = platform_table(table, platform.source, "a [[device]]");
     platform.devices.push_back(read_device(device));
   });
   check_unique_names(platform);
@@ -317,11 +305,11 @@ PlatformSpec load_platform(const std::filesystem::path& file) {
   // the ends themselves.
   for_each_table(top, "wire", std::numeric_limits<std::size_t>::max(),
                  [&](const toml::table& table) {
-                   TableReader wire(table, platform.source, "a [[wire]]");
+                   TomlTable wire = platform_table(table, platform.source, "a [[wire]]");
                    platform.wires.push_back(wires.read(wire, default_speed));
                  });
   if (const toml::table* table = top.optional_table("overswitch")) {
-    TableReader overswitch(*table, platform.source, "[overswitch]");
+    TomlTable overswitch = platform_table(*table, platform.source, "[overswitch]");
     platform.overswitch = detail::read_overswitch(overswitch, platform);
   }
   top.reject_unknown_keys();

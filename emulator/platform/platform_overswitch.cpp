@@ -14,7 +14,7 @@ namespace {
 
 namespace limits = platform_limits;
 
-std::vector<std::string> module_names(TableReader& table, const PlatformSpec& platform) {
+std::vector<std::string> module_names(io::TomlTable& table, const PlatformSpec& platform) {
   const toml::array* array = table.optional_array("modules");
   if (array == nullptr || array->empty())
     table.fail("modules", "must list the modules it switches, e.g. [\"module0\", \"module1\"]");
@@ -35,7 +35,7 @@ std::vector<std::string> module_names(TableReader& table, const PlatformSpec& pl
 
 } // namespace
 
-OverswitchSpec read_overswitch(TableReader& table, const PlatformSpec& platform) {
+OverswitchSpec read_overswitch(io::TomlTable& table, const PlatformSpec& platform) {
   OverswitchSpec spec;
   spec.line = static_cast<int>(table.table().source().begin.line);
   spec.modules = module_names(table, platform);

@@ -2,7 +2,7 @@
 
 #include "platform/platform_processor.hpp"
 
-#include "platform/platform_table_reader.hpp"
+#include "platform/platform_toml.hpp"
 
 #include "marsokhod/emulator/platform/platform_limits.hpp"
 
@@ -12,8 +12,9 @@ namespace marsokhod::emulator::detail {
 namespace {
 
 namespace limits = platform_limits;
+using io::TomlTable;
 
-void read_scheduling(TableReader& processor, ProcessorSpec& spec) {
+void read_scheduling(TomlTable& processor, ProcessorSpec& spec) {
   spec.type = processor.string("type");
   spec.links = processor.integer_in("links", 1, limits::kMaxLinks, "links, as on a T805");
   spec.cpu.on_chip_bytes =
@@ -46,7 +47,7 @@ void read_scheduling(TableReader& processor, ProcessorSpec& spec) {
                            limits::kMaxInstructionCycles, "cycles, at least event_latency_cycles");
 }
 
-void read_link_speeds(TableReader& processor, ProcessorSpec& spec) {
+void read_link_speeds(TomlTable& processor, ProcessorSpec& spec) {
   if (processor.optional_array("link_speeds_mbps") == nullptr)
     processor.fail("link_speeds_mbps", "must list the link speeds in Mbit/s");
   spec.link_speeds_mbps = processor.integers_in("link_speeds_mbps", limits::kMinLinkMbps,
@@ -56,7 +57,7 @@ void read_link_speeds(TableReader& processor, ProcessorSpec& spec) {
 }
 
 void read_speed_grades(const toml::table& table, const std::string& file, ProcessorSpec& spec) {
-  TableReader grades(table, file, "[speed_grades]");
+  TomlTable grades = platform_table(table, file, "[speed_grades]");
   for (const auto& [key, node] : table) {
     const Tick cycle_ps = grades.integer_in(key.str(), limits::kMinCyclePs, limits::kMaxCyclePs,
                                             "ps per cycle, 1 GHz to 1 MHz");
@@ -68,7 +69,7 @@ void read_speed_grades(const toml::table& table, const std::string& file, Proces
 }
 
 void read_link_timing(const toml::table& table, const std::string& file, LinkTimingSpec& timing) {
-  TableReader reader(table, file, "[link_timing]");
+  TomlTable reader = platform_table(table, file, "[link_timing]");
   const auto bits = [&](std::string_view key, double minimum) {
     return reader.number_in(key, minimum, limits::kMaxLinkBits);
   };
@@ -83,13 +84,14 @@ void read_link_timing(const toml::table& table, const std::string& file, LinkTim
   reader.reject_unknown_keys();
 }
 
-InstructionCost read_cost(const toml::node& node, std::string_view name, TableReader& costs) {
+InstructionCost read_cost(const toml::node& node, std::string_view name, TomlTable& costs) {
   if (node.is_integer())
     return InstructionCost{costs.integer_in(name, 0, limits::kMaxInstructionCycles, "cycles"), 0,
                            false};
   if (!node.is_table())
     costs.fail(name, "must be a cycle count or { base = N, per_unit = N, fpu = BOOL }");
-  TableReader entry(*node.as_table(), costs.file(), fmt::format("[cost_table] entry '{}'", name));
+  TomlTable entry =
+      platform_table(*node.as_table(), costs.file(), fmt::format("[cost_table] entry '{}'", name));
   InstructionCost cost;
   cost.base = entry.integer_in("base", 0, limits::kMaxInstructionCycles, "cycles");
   cost.per_unit =
@@ -100,7 +102,7 @@ InstructionCost read_cost(const toml::node& node, std::string_view name, TableRe
 }
 
 void read_cost_table(const toml::table& table, const std::string& file, CostTable& table_out) {
-  TableReader costs(table, file, "[cost_table]");
+  TomlTable costs = platform_table(table, file, "[cost_table]");
   std::array<bool, kInstructionCount> seen{};
   for (const auto& [key, node] : table) {
     const auto instruction = instruction_from_mnemonic(key.str());
@@ -118,7 +120,7 @@ void read_cost_table(const toml::table& table, const std::string& file, CostTabl
           "missing from [cost_table]: every instruction needs its data-book cycles");
 }
 
-const toml::table& require_table(TableReader& top, std::string_view key) {
+const toml::table& require_table(TomlTable& top, std::string_view key) {
   const toml::table* table = top.optional_table(key);
   if (table == nullptr)
     throw PlatformError(top.file(), 1, std::string(key), "missing table");
@@ -129,9 +131,9 @@ const toml::table& require_table(TableReader& top, std::string_view key) {
 
 ProcessorSpec load_processor(const std::string& file) {
   const toml::table root = parse_toml_file(file, "processor file");
-  TableReader top(root, file, "the processor file");
+  TomlTable top = platform_table(root, file, "the processor file");
   ProcessorSpec spec;
-  TableReader processor(require_table(top, "processor"), file, "[processor]");
+  TomlTable processor = platform_table(require_table(top, "processor"), file, "[processor]");
   read_scheduling(processor, spec);
   read_link_speeds(processor, spec);
   processor.reject_unknown_keys();

@@ -2,30 +2,22 @@
 // campaign (docs/faults.md, "Campaign files").
 #pragma once
 
+#include "marsokhod/io/formats/keyed_file_error.hpp"
 #include "marsokhod/overswitch/fault.hpp"
 #include "marsokhod/overswitch/protection.hpp"
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace marsokhod::overswitch {
 
 /// A campaign file is wrong: "FILE:LINE: 'KEY': problem", like a platform file's errors.
-class CampaignError : public std::runtime_error {
+class CampaignError : public io::KeyedFileError {
 public:
-  CampaignError(std::string file, int line, std::string key, const std::string& problem);
-  const std::string& file() const { return file_; }
-  int line() const { return line_; }
-  const std::string& key() const { return key_; }
-
-private:
-  std::string file_;
-  int line_;
-  std::string key_;
+  using io::KeyedFileError::KeyedFileError;
 };
 
 /// One kind of fault in the mix: how often it is drawn, where and when it strikes.

@@ -4,6 +4,7 @@
 #include "marsokhod/emulator/kernel/time.hpp"
 #include "marsokhod/emulator/memory/memory_arena.hpp"
 #include "marsokhod/emulator/node/cost_table.hpp"
+#include "marsokhod/io/formats/keyed_file_error.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -17,18 +18,9 @@
 namespace marsokhod::emulator {
 
 /// A platform or processor file is wrong: names the file, the line and the key.
-class PlatformError : public std::runtime_error {
+class PlatformError : public io::KeyedFileError {
 public:
-  PlatformError(std::string file, int line, std::string key, const std::string& problem);
-
-  const std::string& file() const { return file_; }
-  int line() const { return line_; }
-  const std::string& key() const { return key_; }
-
-private:
-  std::string file_;
-  int line_;
-  std::string key_;
+  using io::KeyedFileError::KeyedFileError;
 };
 
 /// Link framing and handshake timing of a processor type, in bit times of the wire's speed

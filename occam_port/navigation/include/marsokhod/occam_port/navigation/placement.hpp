@@ -2,9 +2,9 @@
 #pragma once
 
 #include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/io/formats/keyed_file_error.hpp"
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,20 +12,12 @@
 namespace marsokhod::occam_port {
 
 /// A placement file is wrong: names the file, the line and the key. what() has the shape of
-/// emulator::PlatformError's, "FILE:LINE: 'KEY': problem" ("FILE: ..." when the line is 0,
-/// without the key part when the key is empty), so that both read alike on one command line.
-class PlacementError : public std::runtime_error {
+/// every keyed file's error, emulator::PlatformError's among them, "FILE:LINE: 'KEY': problem"
+/// ("FILE: ..." when the line is 0, without the key part when the key is empty), so that both
+/// read alike on one command line.
+class PlacementError : public io::KeyedFileError {
 public:
-  PlacementError(std::string file, int line, std::string key, const std::string& problem);
-
-  const std::string& file() const { return file_; }
-  int line() const { return line_; }
-  const std::string& key() const { return key_; }
-
-private:
-  std::string file_;
-  int line_;
-  std::string key_;
+  using io::KeyedFileError::KeyedFileError;
 };
 
 /// The navigation program's shape a placement is checked against. The program supplies it, so

@@ -1,13 +1,14 @@
-// Typed, checked reads of one TOML table of a platform or processor file.
+// One table of a TOML input file, read with typed getters that fail naming file, line and key.
 #pragma once
 
-#include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/io/formats/keyed_file_error.hpp"
 #include "marsokhod/io/numbers/checked_number.hpp"
 
 #include <toml++/toml.h>
 
 #include <concepts>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <set>
 #include <string>
@@ -15,23 +16,31 @@
 #include <utility>
 #include <vector>
 
-namespace marsokhod::emulator::detail {
+namespace marsokhod::io {
 
-/// Reads one TOML table of a platform or processor file: typed getters that fail with file,
-/// line and key, and a final check that no key was left unread (an unknown key is an error,
-/// not a comment).
+/// One table of a TOML file: typed getters that fail with the file, the line and the key, and a
+/// final check that no key was left unread (an unknown key is an error, not a comment: a misspelt
+/// optional key would otherwise be silently ignored).
 ///
-/// Integers are only read with a range: the range is checked on the file's int64 before the
-/// value is narrowed to the field's type, so 2^32 + 3 is out of range, never 3.
-class TableReader {
+/// Errors are thrown through the thrower given, so that each file kind throws its own type
+/// (io::throw_keyed<PlatformError>); without one they are KeyedFileErrors.
+/// `where` names the table ("[platform]", "a [[node]]") and ends every problem as " (WHERE)"
+/// (a missing or unknown key is "missing in WHERE", "unknown key in WHERE"); a file whose keys
+/// say where they are leaves it empty and gives a `prefix` instead, which errors put before each
+/// key ("process[2]" names 'process[2].node').
+///
+/// Integers are read as the file's int64, and a range is checked on that before the value is
+/// narrowed to the field's type, so 2^32 + 3 is out of range, never 3.
+class TomlTable {
 public:
-  TableReader(const toml::table& table, std::string file, std::string where);
+  TomlTable(const toml::table& table, std::string file, std::string where,
+            KeyedErrorThrower thrower = nullptr, std::string prefix = {});
 
   /// An integer in [low, high] as an Int. `why` (optional) continues the message with the unit
   /// and where the range comes from: "V is out of range: it must be between L and H why".
   template <std::integral Int>
   Int integer_in(std::string_view key, Int low, Int high, std::string_view why = {}) {
-    return in_range(key, raw_integer(key), low, high, why);
+    return in_range(key, integer_of(key, require(key)), low, high, why);
   }
   /// integer_in, or `fallback` when the key is absent.
   template <std::integral Int>
@@ -50,18 +59,36 @@ public:
         values.push_back(in_range(key, integer_of(key, element), low, high, why));
     return values;
   }
+  /// Any integer, as the file's int64, or nullopt when the key is absent.
+  std::optional<std::int64_t> optional_integer(std::string_view key);
+
   /// A finite number in [low, high]; a TOML integer is taken as its value.
   double number_in(std::string_view key, double low, double high);
+  /// Any finite number, or nullopt when the key is absent.
+  std::optional<double> optional_number(std::string_view key);
+
   std::string string(std::string_view key);
   std::optional<std::string> optional_string(std::string_view key);
+  /// true or false, or `fallback` when the key is absent.
   bool boolean(std::string_view key, bool fallback);
   const toml::table* optional_table(std::string_view key);
   const toml::array* optional_array(std::string_view key);
 
-  /// Fails on the first key no getter asked for.
+  /// Counts `keys` as read, so that reject_unknown_keys() can run before the getters do.
+  void expect_keys(std::initializer_list<std::string_view> keys);
+  /// Fails on the first key no getter asked for: "unknown key in WHERE".
   void reject_unknown_keys() const;
+  /// The same, saying `problem` instead.
+  void reject_unknown_keys(std::string_view problem) const;
+
+  /// Fails at the key's line (the table's when the key is absent).
   [[noreturn]] void fail(std::string_view key, const std::string& problem) const;
+  /// The line of the key's value, or of the table when it lacks the key.
   int line_of(std::string_view key) const;
+  /// The line of the table itself (0 for a whole file).
+  int line() const;
+  /// The key as errors name it: "process[2].node" under a prefix.
+  std::string key_name(std::string_view key) const;
   const std::string& file() const { return file_; }
   const toml::table& table() const { return table_; }
 
@@ -70,8 +97,9 @@ private:
   const toml::node& require(std::string_view key);
   /// Marks the key read and tells whether the table lacks it.
   bool absent(std::string_view key);
-  std::int64_t raw_integer(std::string_view key);
   std::int64_t integer_of(std::string_view key, const toml::node& node) const;
+  std::string with_where(const std::string& problem) const;
+  [[noreturn]] void raise(int line, std::string_view key, const std::string& problem) const;
   [[noreturn]] void fail_range(std::string_view key, std::int64_t value, const std::string& low,
                                const std::string& high, std::string_view why) const;
 
@@ -80,25 +108,15 @@ private:
                std::string_view why) const {
     if (std::cmp_less(value, low) || std::cmp_greater(value, high))
       fail_range(key, value, std::to_string(low), std::to_string(high), why);
-    return *io::narrow<Int>(value); // [low, high] lies inside Int
+    return *narrow<Int>(value); // [low, high] lies inside Int
   }
 
   const toml::table& table_;
   std::string file_;
   std::string where_;
+  KeyedErrorThrower thrower_;
+  std::string prefix_;
   std::set<std::string, std::less<>> read_;
 };
 
-/// A file that could not be read at all (missing, a directory, a FIFO, too large), as opposed
-/// to one whose text is wrong; lets a platform say which of its keys named the file.
-class UnreadableFileError : public PlatformError {
-public:
-  using PlatformError::PlatformError;
-};
-
-/// Parses a TOML file through the bounded reader (regular files of at most 16 MiB only: a
-/// directory, FIFO or device is refused, never read), turning syntax errors and unreadable
-/// files into PlatformError. `kind` names the file in messages ("platform file").
-toml::table parse_toml_file(const std::string& file, std::string_view kind);
-
-} // namespace marsokhod::emulator::detail
+} // namespace marsokhod::io
