@@ -136,6 +136,25 @@ TEST(CampaignCommand, BadCampaignFilesNameFileLineAndKey) {
       {"bad-share", head + fault + "from_share = 0.5\nto_share = 0.2\n", 9, "to_share",
        "more than from_share"},
       {"no-fault", head, 0, "fault", "at least one [[fault]]"},
+      {"bad-over", head + "[[fault]]\nkind = \"seu\"\nover = \"sky\"\n", 8, "over",
+       "neither \"allocated\" nor \"memory\""},
+      {"bad-stuck-value", head + "[[fault]]\nkind = \"stuck\"\nvalue = 2\n", 8, "value",
+       "is not between 0 and 1"},
+      {"scrub-without-edac", head + fault + "[protection]\nscrub_period_s = 5\n", 9,
+       "scrub_period_s", "set edac"},
+      {"bad-protection-key", head + fault + "[protection]\nparity = true\n", 9, "parity",
+       "is not a key of [protection]"},
+      {"bad-preset",
+       head + "[[fault]]\nkind = \"seu\"\nover = \"memory\"\n[upsets]\npreset = \"venus\"\n", 10,
+       "preset", "no preset (cruise, mars-surface, leo)"},
+      {"rate-and-preset",
+       head + "[[fault]]\nkind = \"seu\"\nover = \"memory\"\n[upsets]\npreset = \"leo\"\n"
+              "rate_per_bit_day = 1e-8\n",
+       11, "rate_per_bit_day", "not both"},
+      {"rate-with-a-hang", head + fault + "[upsets]\npreset = \"cruise\"\n", 6, "kind",
+       "every [[fault]] is an upset"},
+      {"rate-over-allocated", head + "[[fault]]\nkind = \"seu\"\n[upsets]\npreset = \"cruise\"\n",
+       6, "over", "over every bit of memory"},
   };
   const fs::path dir = fresh_folder("campaign", "bad");
   for (const BadFile& c : cases) {
