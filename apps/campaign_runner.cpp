@@ -78,7 +78,7 @@ occam_port::CycleEmulation emulate_supervised(const CampaignScene& scene,
                                               overswitch::FailoverSupervisor& supervisor,
                                               emu::TraceSink* trace) {
   occam_port::CycleInput input{
-      scene.frame.images.left, scene.frame.images.right, scene.rig.get(), {}};
+      scene.frame.images.left, scene.frame.images.right, scene.rig.get(), {}, {}};
   input.options.attitude = scene.description.placement.attitude;
   const occam_port::CycleSetup setup{
       &platform,   &placement, std::nullopt, trace, occam_port::kOccamStyleFactor,

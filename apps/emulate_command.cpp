@@ -155,7 +155,7 @@ int run_emulate(const EmulateCli& cli) {
   const Pair pair = pair_for(cli);
   imaging::prepare_output_folder(cli.out);
 
-  occam_port::CycleInput input{pair.left, pair.right, pair.rig.get(), {}};
+  occam_port::CycleInput input{pair.left, pair.right, pair.rig.get(), {}, {}};
   input.options.attitude = pair.attitude;
   occam_port::CycleSetup setup{&platform,       &placement, std::nullopt, nullptr,
                                cli.occam_style, nullptr,    std::nullopt};

@@ -41,7 +41,7 @@ ReproductionScene render_scene(std::uint64_t seed) {
 op::CycleEmulation run_cycle(const ReproductionScene& scene, const emu::PlatformSpec& platform,
                              const op::Placement& placement, double occam_style,
                              std::optional<std::size_t> external_bytes = std::nullopt) {
-  op::CycleInput input{scene.left, scene.right, scene.rig.get(), {}};
+  op::CycleInput input{scene.left, scene.right, scene.rig.get(), {}, {}};
   input.options.attitude = scene.attitude;
   return op::emulate_navigation_cycle(input,
                                       op::CycleSetup{&platform, &placement, external_bytes, nullptr,

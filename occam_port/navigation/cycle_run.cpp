@@ -2,6 +2,7 @@
 
 #include "navigation/cycle_run.hpp"
 
+#include "navigation/mission_record.hpp"
 #include "navigation/program_processes.hpp"
 
 #include "marsokhod/emulator/links/link.hpp"
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <exception>
 #include <stdexcept>
 
@@ -77,6 +79,7 @@ void CycleRun::new_state() {
   cycle->occam_style = setup_->occam_style;
   cycle->kernel = &net_.kernel;
   cycle->supervisor = setup_->supervisor;
+  cycle->mission_blocks = mission_blocks_;
   for (const auto& [node, output] : net_.device_outputs)
     cycle->device_outputs[node] = output.get();
   states_.push_back(std::move(cycle));
@@ -102,7 +105,10 @@ void CycleRun::place_channels() {
   }
 }
 
+// The code, and the mission state the last cycle left, are in every module's memory before the
+// cycle starts.
 bool CycleRun::start() {
+  const MissionRecord mission = encode_mission(input_->mission);
   for (const NodePlan& node_plan : plan_->nodes) {
     emulator::Node& node = net_.node(node_plan.node);
     try {
@@ -113,9 +119,27 @@ bool CycleRun::start() {
       record_fault(state(), node, fault, fmt::format("code, {} B", node_plan.code_bytes));
       return false;
     }
+    if (!hold_mission(node, mission))
+      return false;
   }
+  state().mission_blocks = mission_blocks_;
   spawn_processes();
   return !state().fault;
+}
+
+bool CycleRun::hold_mission(emulator::Node& node, std::span<const std::byte> record) {
+  emulator::MemoryArena& memory = node.memory();
+  try {
+    memory.set_label("mission", "mission state");
+    const emulator::Address block = memory.allocate_block(
+        record.size(), emulator::MemoryArena::kWordBytes, emulator::Placement::external, "mission");
+    std::memcpy(memory.pointer(block), record.data(), record.size());
+    mission_blocks_[node.name()] = block;
+  } catch (const emulator::MemoryFault& fault) {
+    record_fault(state(), node, fault, fmt::format("mission state, {} B", record.size()));
+    return false;
+  }
+  return true;
 }
 
 void CycleRun::spawn_processes() {
@@ -237,7 +261,7 @@ std::size_t CycleRun::code_bytes(const std::string& node) const {
     return 0;
   for (const NodePlan& node_plan : plan_->nodes)
     if (node_plan.node == role->second)
-      return node_plan.code_bytes;
+      return node_plan.code_bytes + kMissionRecordBytes;
   return 0;
 }
 
@@ -255,6 +279,7 @@ void CycleRun::restart(const std::map<std::string, std::string>& moved) {
       throw std::logic_error(from + " runs none of the program to move");
     if (!net_.node(to).running())
       throw std::logic_error("the program cannot move onto " + to + ", which is not running");
+    take_mission_from_survivor(from, to);
     roles_[to] = role->second;
     roles_.erase(role);
     for (ProcessPlace& place : placement_.places)
@@ -267,6 +292,20 @@ void CycleRun::restart(const std::map<std::string, std::string>& moved) {
   ++restarts_;
   new_state();
   spawn_processes();
+}
+
+// The spare's boot stream carried the survivor's copy of the mission state (code_bytes counts
+// it): the cycle goes on from the state the survivor kept, not from the host's.
+void CycleRun::take_mission_from_survivor(const std::string& failed, const std::string& spare) {
+  mission_blocks_.erase(failed);
+  for (const auto& [node, block] : mission_blocks_) {
+    emulator::Node& survivor = net_.node(node);
+    if (node == spare || !survivor.running())
+      continue;
+    const std::byte* record = survivor.memory().pointer(block);
+    hold_mission(net_.node(spare), std::span(record, kMissionRecordBytes));
+    return;
+  }
 }
 
 void CycleRun::abandon(const std::string& why) {

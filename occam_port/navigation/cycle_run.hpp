@@ -61,6 +61,9 @@ private:
   void reset_device_link(const std::string& node);
   void process_ended();
   void halt_on_error(emulator::Node& node, CycleState& cycle, ModuleHalt halt);
+  /// Places a copy of the mission state record in `node`'s memory; false after a memory fault.
+  bool hold_mission(emulator::Node& node, std::span<const std::byte> record);
+  void take_mission_from_survivor(const std::string& failed, const std::string& spare);
 
   const CycleInput* input_;
   const CycleSetup* setup_;
@@ -75,6 +78,7 @@ private:
   bool killing_ = false;
   emulator::Tick finished_at_ = 0;
   std::vector<ModuleHalt> halts_;
+  std::map<std::string, emulator::Address> mission_blocks_;
   std::optional<std::string> abandoned_;
   CycleNetwork net_; // last: its nodes, and the processes on them, go first
 };

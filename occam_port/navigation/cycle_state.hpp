@@ -61,6 +61,8 @@ struct CycleState {
   /// Each node's link to the devices (frame store, host), if it has one; its output is shared
   /// with the heartbeat.
   std::map<std::string, emulator::SharedOutput*> device_outputs;
+  /// Where each node running the program holds its copy of the mission state.
+  std::map<std::string, emulator::Address> mission_blocks;
   /// Told of each stage's start, when the cycle is supervised.
   CycleSupervisor* supervisor = nullptr;
   /// The program's processes of this run that have not ended, in the order they started.
@@ -70,6 +72,7 @@ struct CycleState {
 
   // The host's side.
   nav::NavigationResult products;
+  std::optional<MissionState> mission_after;
   nav::CountingMeter work;
   nav::CountingMeter recomputed_work;
   std::vector<StageFigures> stages;

@@ -117,8 +117,10 @@ CycleEmulation emulate_navigation_cycle(const CycleInput& input, const CycleSetu
   out.abandoned = run.abandoned();
   out.context_switches = net.kernel.context_switches();
   collect_figures(net, platform, run.placement(), accounting, out);
-  if (!cycle.fault && run.finished())
+  if (!cycle.fault && run.finished()) {
     out.result = std::move(cycle.products);
+    out.mission_after = cycle.mission_after;
+  }
   return out;
 }
 

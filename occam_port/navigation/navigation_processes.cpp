@@ -1,5 +1,6 @@
 // The navigation program's processes from image acquisition to telemetry, the stereo half aside.
 
+#include "navigation/mission_record.hpp"
 #include "navigation/node_terrain.hpp"
 #include "navigation/process_bodies.hpp"
 
@@ -35,6 +36,29 @@ void upload(ProcessContext& c, std::span<const std::byte> payload) {
   emulator::Node& node = c.node();
   c.device_output().output({header, payload},
                            [&node] { node.execute(emulator::Instruction::out); });
+}
+
+/// The mission state as this process's module holds it (read, not charged: a few words).
+MissionState held_mission(ProcessContext& c) {
+  const auto& blocks = c.cycle().mission_blocks;
+  const auto block = blocks.find(c.node().name());
+  if (block == blocks.end())
+    throw std::logic_error("node " + c.node().name() + " holds no mission state");
+  const std::byte* record = c.node().memory().pointer(block->second);
+  return decode_mission(
+      std::span<const std::byte, kMissionRecordBytes>(record, kMissionRecordBytes));
+}
+
+/// The planner's options for the motion scheme's state: a short path (escape range) after an
+/// emergency, the normal range otherwise (paper, section 3).
+nav::PlannerOptions planner_for(ProcessContext& c) {
+  nav::PlannerOptions options = c.cycle().options.planner;
+  if (held_mission(c).motion.state != nav::MotionState::escape_planning)
+    return options;
+  const nav::MotionConfig scheme;
+  options.target_min_m = scheme.escape_min_m;
+  options.target_max_m = scheme.escape_max_m;
+  return options;
 }
 
 // ---- the processes ----
@@ -110,8 +134,8 @@ void path(ProcessContext& c) {
   zones.counts = receive_value<decltype(zones.counts)>(s.channels.zones);
   await_hand_over(s.channels.zones);
   c.doing("safest path: row sweep costs and steps");
-  nav::PathPlan plan =
-      nav::plan_cycle_path(terrain.rows(), zones, s.options.planner, c.meter(), c.memory());
+  nav::PathPlan plan = nav::plan_cycle_path(terrain.rows(), zones, planner_for(c), c.meter(),
+                                            c.memory());
   nav::explain_stereo_failure(reason, plan);
   std::pmr::vector<nav::GroundPoint> ground(c.memory());
   if (plan.found) {
@@ -161,15 +185,17 @@ void motion(ProcessContext& c) {
   c.start_stage();
   c.doing("drive commands");
   const auto commands = receive_list<nav::DriveCommand>(s.channels.commands, c.memory());
+  const MissionState before = held_mission(c);
   const nav::MotionStep step = nav::next_motion_step(
-      nav::MotionStatus{}, nav::MotionEvent{found != 0 ? nav::MotionEventKind::path_found
-                                                       : nav::MotionEventKind::no_path,
-                                            nav::Side::left});
+      before.motion, nav::MotionEvent{found != 0 ? nav::MotionEventKind::path_found
+                                                 : nav::MotionEventKind::no_path,
+                                      nav::Side::left});
   std::pmr::vector<nav::DriveCommand> wheels(c.memory());
   if (step.action.turn_deg != 0.0)
     wheels.push_back({step.action.turn_deg, 0.0});
   if (step.action.then == nav::MotionAction::Then::drive)
     wheels.insert(wheels.end(), commands.begin(), commands.end());
+  s.mission_after = mission_after(before, step.status, wheels);
   send_value(s.channels.wheels, static_cast<std::int32_t>(step.status.state));
   send_list<nav::DriveCommand>(s.channels.wheels, wheels);
 }

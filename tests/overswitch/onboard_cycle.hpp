@@ -62,29 +62,37 @@ protected:
     const Site& s = site();
     nav::NavigationOptions options;
     options.attitude = s.scene.placement.attitude;
-    const occam_port::CycleInput input{s.frame.images.left, s.frame.images.right, &s.rig, options};
+    const occam_port::CycleInput input{s.frame.images.left, s.frame.images.right, &s.rig, options,
+                                       mission_};
     return occam_port::emulate_navigation_cycle(
         input, occam_port::CycleSetup{&protected_, &placement_, std::nullopt, nullptr,
                                       occam_port::kOccamStyleFactor, supervisor_.get(),
                                       120 * emulator::kSecond});
   }
 
+  /// The fault-free cycle, unprotected, from the mission's start (whatever mission_ says).
   const CycleEmulation& golden() {
     static const CycleEmulation golden = [this] {
+      const occam_port::MissionState kept = mission_;
+      mission_ = {};
       FailoverSupervisor* unused = nullptr;
-      return emulate({}, unused);
+      CycleEmulation run = emulate({}, unused);
+      mission_ = kept;
+      return run;
     }();
     return golden;
   }
 
   /// The boot stream of module `node`'s share of the program, timed on the wire by hand: its
-  /// code bytes, one length byte per block of at most 255.
+  /// code bytes and the mission state record (eight INT32 and REAL32 words), one length byte per
+  /// block of at most 255.
   Tick boot_time_of(const std::string& node) const {
     const occam_port::MemoryPlan plan =
         occam_port::plan_memory(platform_, placement_, 128, 128, 4, std::nullopt);
     for (const occam_port::NodePlan& node_plan : plan.nodes)
       if (node_plan.node == node) {
-        const std::size_t stream = node_plan.code_bytes + (node_plan.code_bytes + 254) / 255;
+        const std::size_t bytes = node_plan.code_bytes + 8 * 4;
+        const std::size_t stream = bytes + (bytes + 254) / 255;
         return static_cast<Tick>(stream) * kByteOnWire;
       }
     ADD_FAILURE() << node << " runs none of the program";
@@ -98,6 +106,8 @@ protected:
 
   emulator::PlatformSpec platform_;
   emulator::PlatformSpec protected_;
+  /// The mission state the cycles start from.
+  occam_port::MissionState mission_;
   occam_port::Placement placement_;
   std::unique_ptr<FailoverSupervisor> supervisor_;
 };

@@ -72,7 +72,7 @@ Compared on_the_card(const SyntheticPair& pair) {
   const nav::NavigationOptions options;
   Compared compared;
   compared.native = nav::navigate(pair.left, pair.right, pair.rig, options, compared.native_work);
-  const CycleInput input{pair.left, pair.right, &pair.rig, options};
+  const CycleInput input{pair.left, pair.right, &pair.rig, options, {}};
   compared.run =
       emulate_navigation_cycle(input, CycleSetup{&card, &placement, std::nullopt, nullptr,
                                                  kOccamStyleFactor, nullptr, std::nullopt});
@@ -114,7 +114,7 @@ TEST(NavigationProgram, TheOccamStyleScalesTheWorksCpuTimeAndNotTheWork) {
   const SyntheticPair pair(5);
   const emulator::PlatformSpec card = emulator::load_platform(kPlatforms / "pc-card.toml");
   const Placement placement = everything_on("card", card.name);
-  const CycleInput input{pair.left, pair.right, &pair.rig, nav::NavigationOptions{}};
+  const CycleInput input{pair.left, pair.right, &pair.rig, nav::NavigationOptions{}, {}};
   const CycleEmulation once = emulate_navigation_cycle(
       input, CycleSetup{&card, &placement, std::nullopt, nullptr, 1.0, nullptr, std::nullopt});
   const CycleEmulation twice = emulate_navigation_cycle(
@@ -164,7 +164,7 @@ TEST(NavigationProgram, AMemoryFaultEndsTheRunWithTheNodeProcessAndBuffer) {
   const emulator::PlatformSpec card = emulator::load_platform(kPlatforms / "pc-card.toml");
   const Placement placement = everything_on("card", card.name);
   const SyntheticPair pair(3);
-  const CycleInput input{pair.left, pair.right, &pair.rig, {}};
+  const CycleInput input{pair.left, pair.right, &pair.rig, {}, {}};
   CycleSetup setup{&card,   &placement,  std::nullopt, nullptr, kOccamStyleFactor,
                    nullptr, std::nullopt};
   setup.external_bytes = 64 * 1024;

@@ -29,8 +29,8 @@ public:
   virtual emulator::SharedOutput* device_output(const std::string& node) = 0;
   /// `sink` receives the name of the node whose heartbeat byte reached a device link.
   virtual void on_heartbeat(std::function<void(const std::string& node)> sink) = 0;
-  /// The program's code bytes on the node that runs `node`'s share of it now (what a spare
-  /// taking its place must be booted with); 0 for a node that runs none of it.
+  /// The bytes a spare taking `node`'s place must be booted with: the program's code on it and
+  /// the mission state record; 0 for a node that runs none of the program.
   virtual std::size_t code_bytes(const std::string& node) const = 0;
   /// The node that runs `process` now.
   virtual const std::string& node_of(const std::string& process) const = 0;

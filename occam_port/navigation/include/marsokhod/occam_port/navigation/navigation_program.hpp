@@ -6,6 +6,7 @@
 #include "marsokhod/emulator/trace/trace_sink.hpp"
 #include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/nav/cycle/motion_scheme.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav/work/work.hpp"
 #include "marsokhod/occam_port/navigation/cycle_supervisor.hpp"
@@ -25,13 +26,33 @@ namespace marsokhod::occam_port {
 /// program starts them; what a placement file is checked against.
 const ProgramShape& navigation_program_shape();
 
+/// What the program keeps from one cycle to the next (docs/faults.md, "State across cycles"):
+/// the motion scheme's status, the rover's pose by dead reckoning from the wheel commands, and
+/// the uploads sent so far. Every module running the program holds a copy in its memory; a
+/// spare gets the survivor's with its boot stream, so that a restarted cycle goes on from it.
+struct MissionState {
+  nav::MotionStatus motion;
+  double x_m = 0.0;
+  double y_m = 0.0;
+  double heading_deg = 0.0; ///< counter-clockwise from the first cycle's forward axis
+  std::uint32_t uploads = 0;
+  friend bool operator==(const MissionState&, const MissionState&) = default;
+};
+
+/// The mission state as the modules hold it: an occam record of INT32 state, REAL32 turned,
+/// INT32 turn sign, REAL32 x, y and heading, INT32 uploads and INT32 check (an XOR of the
+/// others, so that a copy struck by an upset is refused rather than driven on).
+inline constexpr std::size_t kMissionRecordBytes = 32;
+
 /// What one cycle is run on: the pair (the reference left image and the right one, of the
-/// rig's size), the rig and the options of `marsokhod nav`.
+/// rig's size), the rig, the options of `marsokhod nav`, and the mission state the last cycle
+/// left.
 struct CycleInput {
   imaging::ImageView<const std::uint8_t> left;
   imaging::ImageView<const std::uint8_t> right;
   const imaging::StereoRig* rig = nullptr;
   nav::NavigationOptions options;
+  MissionState mission;
 };
 
 /// Where the cycle runs: a platform, which process runs on which node, and what-if changes.
@@ -138,6 +159,8 @@ struct CycleEmulation {
   int restarts = 0;
   /// The program's last process ended (false when abandoned, cut by the time limit, or faulted).
   bool finished = false;
+  /// The mission state the cycle leaves for the next one (after the finished run).
+  std::optional<MissionState> mission_after;
   /// Why a supervisor abandoned the cycle, if it did.
   std::optional<std::string> abandoned;
   std::uint64_t context_switches = 0;
