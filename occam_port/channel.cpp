@@ -118,8 +118,10 @@ void ChanBase::output_after_slow_charge(emulator::Tick time, const void* message
 
 inline void ChanBase::output_charged(Kernel& kernel, Process& me, const void* message,
                                      std::size_t bytes, CopyFn copy, Registration& registration) {
-  if (external()) [[unlikely]]
-    return output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
+  if (external()) [[unlikely]] {
+    output_port_->output(std::span(static_cast<const std::byte*>(message), bytes));
+    return;
+  }
   if (state_ == State::writer_waiting) [[unlikely]]
     two_sides("outputting");
   if (state_ == State::reader_waiting) {
@@ -151,8 +153,10 @@ void ChanBase::input_after_slow_charge(emulator::Tick time, void* message, std::
 
 inline void ChanBase::input_charged(Kernel& kernel, Process& me, void* message, std::size_t bytes,
                                     CopyFn copy, Registration& registration) {
-  if (external()) [[unlikely]]
-    return input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
+  if (external()) [[unlikely]] {
+    input_port_->input(std::span(static_cast<std::byte*>(message), bytes));
+    return;
+  }
   if (state_ == State::reader_waiting) [[unlikely]]
     two_sides("inputting");
   if (state_ == State::writer_waiting) {

@@ -134,10 +134,12 @@ void Link::jump_stream(int sender) {
   if (bound <= now)
     return;
   const std::uint64_t in_time = static_cast<std::uint64_t>((bound - 1 - now) / *period);
-  const std::uint64_t bytes =
-      std::min({framing_.skippable_bytes(sender), in_time,
-                static_cast<std::uint64_t>(out.out.size() - out.started - 1),
-                static_cast<std::uint64_t>(in.in.size() - in.done - 1)});
+  std::uint64_t bytes = std::min({framing_.skippable_bytes(sender), in_time,
+                                  static_cast<std::uint64_t>(out.out.size() - out.started - 1),
+                                  static_cast<std::uint64_t>(in.in.size() - in.done - 1)});
+  // A byte due to be flipped is stepped, so that on_data_start() flips it.
+  if (!flips_[sender].empty())
+    bytes = std::min(bytes, bytes_before_flip(sender));
   if (bytes == 0 || !kernel_->advance_to_next_step(now + static_cast<Tick>(bytes) * *period))
     return;
   // The byte on the wire arrives first, then the next bytes - 1; the last one jumped is then
@@ -149,6 +151,7 @@ void Link::jump_stream(int sender) {
   out.started += bytes;
   out.done += bytes;
   in.done += bytes;
+  data_started_[sender] += bytes;
   framing_.skip_stream(sender, bytes, *period);
 }
 
@@ -165,6 +168,9 @@ void Link::handle(const LinkStep& step) {
       on_ack_end(step.end);
     break;
   case LinkStep::Kind::ack_start:
+    if (step.lost)
+      note_lost_acknowledge(step.end);
+    break;
   case LinkStep::Kind::none:
     break;
   }
@@ -174,6 +180,9 @@ void Link::on_data_start(int sender) {
   LinkPort::Transfer& out = ports_[sender].output_;
   on_wire_[sender] = out.out[out.started++];
   last_byte_flow_[sender] = out.started == out.out.size() ? out.flow : 0;
+  const std::uint64_t byte = data_started_[sender]++;
+  if (!flips_[sender].empty()) [[unlikely]]
+    apply_flips(sender, byte);
 }
 
 void Link::on_data_end(int sender, bool accepted) {

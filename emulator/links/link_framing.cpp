@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace marsokhod::emulator {
 namespace {
@@ -61,8 +62,8 @@ std::uint64_t LinkFraming::output_left(int end) const {
 void LinkFraming::accept_in_flight(int receiver) {
   End& sender = ends_[1 - receiver];
   End& self = ends_[receiver];
-  if (sender.data_end == kNever || sender.data_accepted || self.accept_budget == 0 || !self.alive ||
-      broken_)
+  if (sender.data_end == kNever || sender.data_accepted || sender.data_lost ||
+      self.accept_budget == 0 || !self.alive)
     return;
   --self.accept_budget;
   sender.data_accepted = true;
@@ -80,32 +81,64 @@ void LinkFraming::reset_end(int end, Tick now, bool alive) {
   ends_[end].next_data_allowed = wire_free;
 }
 
-void LinkFraming::start_data(int sender, Tick at) {
+void LinkFraming::reset_output(int end, Tick now) {
+  ++generation_;
+  now_ = std::max(now_, now);
+  End& self = ends_[end];
+  self.queued = 0;
+  self.awaiting_ack = false;
+}
+
+void LinkFraming::reset_input(int end, Tick now) {
+  ++generation_;
+  now_ = std::max(now_, now);
+  End& self = ends_[end];
+  End& sender = ends_[1 - end];
+  self.accept_budget = 0;
+  self.holding = false;
+  self.ack_owed = false;
+  self.ack_ready = kNever;
+  if (sender.data_end != kNever && sender.data_accepted)
+    sender.data_dropped = true;
+}
+
+bool LinkFraming::start_data(int sender, Tick at) {
   End& self = ends_[sender];
   --self.queued;
   self.awaiting_ack = true;
   self.data_start = at;
   self.data_end = at + timing_.data_packet;
   self.data_accepted = false;
+  self.data_lost = wire_dead_[sender];
+  self.data_dropped = false;
   self.wire_free = self.data_end + timing_.gap;
   accept_in_flight(1 - sender);
+  return self.data_lost;
 }
 
 void LinkFraming::end_data(int sender, LinkStep& step) {
   End& self = ends_[sender];
   End& receiver = ends_[1 - sender];
   self.data_end = kNever;
-  step.accepted = self.data_accepted;
-  if (!self.data_accepted && receiver.alive && !broken_)
+  step.accepted = self.data_accepted && !self.data_dropped;
+  if (!self.data_accepted && !self.data_lost && receiver.alive)
     receiver.holding = true;
+  self.data_lost = false;
+  self.data_dropped = false;
 }
 
-void LinkFraming::start_ack(int receiver, Tick at) {
+bool LinkFraming::start_ack(int receiver, Tick at) {
   End& self = ends_[receiver];
   self.ack_owed = false;
   self.ack_ready = kNever;
   self.ack_end = at + timing_.ack_packet;
   self.wire_free = self.ack_end + timing_.gap;
+  self.ack_lost = wire_dead_[receiver];
+  if (acks_to_lose_[receiver] > 0) {
+    --acks_to_lose_[receiver];
+    self.ack_lost = true;
+  }
+  return self.ack_lost;
 }
 
 void LinkFraming::end_ack(int receiver, LinkStep& step) {
@@ -113,7 +146,7 @@ void LinkFraming::end_ack(int receiver, LinkStep& step) {
   End& sender = ends_[1 - receiver];
   self.ack_end = kNever;
   step.end = 1 - receiver;
-  if (!sender.alive || broken_ || !sender.awaiting_ack)
+  if (std::exchange(self.ack_lost, false) || !sender.alive || !sender.awaiting_ack)
     return;
   step.accepted = true;
   sender.awaiting_ack = false;
@@ -150,10 +183,10 @@ LinkStep LinkFraming::step() {
     end_ack(best.end, best);
     break;
   case Kind::ack_start:
-    start_ack(best.end, best.time);
+    best.lost = start_ack(best.end, best.time);
     break;
   case Kind::data_start:
-    start_data(best.end, best.time);
+    best.lost = start_data(best.end, best.time);
     break;
   case Kind::none:
     break;

@@ -39,37 +39,53 @@ private:
 
 } // namespace
 
-void LinkPort::output(std::span<const std::byte> message) {
+// A reset overwrites the result with "cut short" before it wakes the process.
+LinkTransferResult LinkPort::output(std::span<const std::byte> message) {
   Kernel& kernel = link_->kernel();
   Process& self = current_process(kernel, name_);
+  LinkTransferResult result{true, message.size()};
   bool done = false;
-  start_output(
+  begin_output(
       message,
       [&] {
         done = true;
         kernel.wake(self);
-      });
+      },
+      &result);
   AbandonOnUnwind guard(done, link_->alive_, [this] { abandon_output(); });
   while (!done)
     kernel.block(WaitInfo{WaitKind::link_output, this});
+  return result;
 }
 
-void LinkPort::input(std::span<std::byte> buffer) {
+LinkTransferResult LinkPort::input(std::span<std::byte> buffer) {
   Kernel& kernel = link_->kernel();
   Process& self = current_process(kernel, name_);
+  LinkTransferResult result{true, buffer.size()};
   bool done = false;
-  start_input(
+  begin_input(
       buffer,
       [&] {
         done = true;
         kernel.wake(self);
-      });
+      },
+      &result);
   AbandonOnUnwind guard(done, link_->alive_, [this] { abandon_input(); });
   while (!done)
     kernel.block(WaitInfo{WaitKind::link_input, this});
+  return result;
 }
 
 void LinkPort::start_output(std::span<const std::byte> message, Done done) {
+  begin_output(message, std::move(done), nullptr);
+}
+
+void LinkPort::start_input(std::span<std::byte> buffer, Done done) {
+  begin_input(buffer, std::move(done), nullptr);
+}
+
+void LinkPort::begin_output(std::span<const std::byte> message, Done done,
+                            LinkTransferResult* report) {
   if (output_.active)
     throw std::logic_error(fmt::format("{}: an output is already in progress", name_));
   if (message.empty()) {
@@ -77,7 +93,7 @@ void LinkPort::start_output(std::span<const std::byte> message, Done done) {
     return;
   }
   Kernel& kernel = link_->kernel();
-  output_ = Transfer{true, {}, message, 0, 0, link_->next_flow_id(), std::move(done)};
+  output_ = Transfer{true, {}, message, 0, 0, link_->next_flow_id(), std::move(done), report};
   output_since_ = kernel.now();
   if (TraceSink* sink = link_->trace()) {
     sink->begin_slice(out_track_, kernel.now(), fmt::format("out {} bytes", message.size()));
@@ -87,7 +103,7 @@ void LinkPort::start_output(std::span<const std::byte> message, Done done) {
   link_->reschedule();
 }
 
-void LinkPort::start_input(std::span<std::byte> buffer, Done done) {
+void LinkPort::begin_input(std::span<std::byte> buffer, Done done, LinkTransferResult* report) {
   if (input_.active)
     throw std::logic_error(fmt::format("{}: an input is already in progress", name_));
   if (buffer.empty()) {
@@ -95,7 +111,7 @@ void LinkPort::start_input(std::span<std::byte> buffer, Done done) {
     return;
   }
   Kernel& kernel = link_->kernel();
-  input_ = Transfer{true, buffer, {}, 0, 0, 0, std::move(done)};
+  input_ = Transfer{true, buffer, {}, 0, 0, 0, std::move(done), report};
   if (TraceSink* sink = link_->trace())
     sink->begin_slice(in_track_, kernel.now(), fmt::format("in {} bytes", buffer.size()));
   if (link_->framing_.offer_input(end_, kernel.now(), buffer.size())) {
@@ -115,6 +131,49 @@ void LinkPort::finish(Transfer& transfer, TrackId track) {
     sink->end_slice(track, link_->kernel().now());
   if (done)
     done();
+}
+
+void LinkPort::cut_short(Transfer& transfer, TrackId track) {
+  if (&transfer == &output_)
+    count_output();
+  Transfer ended = std::exchange(transfer, Transfer{});
+  if (TraceSink* sink = link_->trace())
+    sink->end_slice(track, link_->kernel().now());
+  if (ended.report == nullptr)
+    return;
+  *ended.report = LinkTransferResult{false, ended.done};
+  if (ended.on_done)
+    ended.on_done();
+}
+
+bool LinkPort::reset_output() {
+  const Tick now = link_->kernel().now();
+  if (TraceSink* sink = link_->trace())
+    sink->instant(out_track_, now, "resetch", name_ + " out");
+  link_->framing_.reset_output(end_, now);
+  const bool cut = output_.active;
+  if (cut)
+    cut_short(output_, out_track_);
+  link_->reschedule();
+  return cut;
+}
+
+bool LinkPort::reset_input() {
+  const Tick now = link_->kernel().now();
+  if (TraceSink* sink = link_->trace())
+    sink->instant(in_track_, now, "resetch", name_ + " in");
+  link_->framing_.reset_input(end_, now);
+  const bool cut = input_.active;
+  if (cut)
+    cut_short(input_, in_track_);
+  link_->reschedule();
+  return cut;
+}
+
+bool LinkPort::reset() {
+  const bool output_cut = reset_output();
+  const bool input_cut = reset_input();
+  return output_cut || input_cut;
 }
 
 void LinkPort::count_output() {

@@ -50,6 +50,10 @@ std::optional<Tick> LinkFraming::stream_period(int sender) {
   const Phase before = std::exchange(last_data_start_[static_cast<std::size_t>(sender)], now);
   if (!before.valid || before.generation != generation_)
     return std::nullopt;
+  // A dead wire or an acknowledge still to be lost stops the stream within a byte: no jump
+  // may carry it past that.
+  if (wire_dead_[0] || wire_dead_[1] || acks_to_lose_[static_cast<std::size_t>(1 - sender)] > 0)
+    return std::nullopt;
   Phase expected = before;
   End& out = expected.ends[static_cast<std::size_t>(sender)];
   End& in = expected.ends[static_cast<std::size_t>(1 - sender)];

@@ -11,10 +11,21 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace marsokhod::emulator {
 
 class Link;
+
+/// How a blocking transfer on a link port ended.
+struct LinkTransferResult {
+  /// False when a reset of the port cut the transfer short.
+  bool complete = true;
+  /// Bytes acknowledged (output) or stored (input) by then: the whole message when complete.
+  std::size_t bytes = 0;
+
+  explicit operator bool() const { return complete; }
+};
 
 /// One end of a link as its node sees it: an output and an input DMA engine that run on
 /// their own while the CPU computes. Occam's external channels use it: a process outputs or
@@ -30,10 +41,12 @@ public:
   Link& link() const { return *link_; }
   int end() const { return end_; }
 
-  /// Sends `message`: returns once its last byte is acknowledged. Only from a process.
-  void output(std::span<const std::byte> message);
-  /// Fills `buffer` from the link: returns once its last byte has arrived. Only from a process.
-  void input(std::span<std::byte> buffer);
+  /// Sends `message`: returns once its last byte is acknowledged, or as soon as a reset cuts
+  /// it short. Only from a process.
+  LinkTransferResult output(std::span<const std::byte> message);
+  /// Fills `buffer` from the link: returns once its last byte has arrived, or as soon as a
+  /// reset cuts it short. Only from a process.
+  LinkTransferResult input(std::span<std::byte> buffer);
 
   /// Starts sending without blocking; `done` runs after the last acknowledge. The bytes must
   /// stay valid until then. One output at a time.
@@ -48,6 +61,19 @@ public:
   /// Simulated time this end's output engine spent on messages, from each output's start to
   /// its last acknowledge (or until it was given up).
   Tick output_busy_time() const { return output_busy_; }
+
+  /// `resetch` on this end's output channel, as occam's OutputOrFail and Reinitialise use it
+  /// to end a hung link output: the engine forgets its transfer, and a process blocked in
+  /// output() resumes at once, told the transfer was cut short and how many bytes were
+  /// acknowledged. A start_output() transfer is forgotten without calling its `done`. The
+  /// peer is not reset: its input keeps waiting and would take the next message's bytes, so
+  /// both ends are reset before the link is used again. Returns whether an output was cut.
+  bool reset_output();
+  /// `resetch` on this end's input channel: as reset_output(), for the input engine (a byte
+  /// waiting unacknowledged is forgotten too, so the peer's output waits until it is reset).
+  bool reset_input();
+  /// `resetch` on both channels of this end. Returns whether a transfer was cut.
+  bool reset();
 
   /// A byte has arrived that no input has taken yet (an ALT guard on this link is ready).
   bool byte_waiting() const;
@@ -67,9 +93,15 @@ private:
     std::size_t done = 0;    ///< bytes acknowledged (output) or stored (input)
     std::uint64_t flow = 0;  ///< trace arrow from this output to the peer's input track
     Done on_done;
+    /// Where a process blocked in output() or input() is told that a reset cut it short.
+    LinkTransferResult* report = nullptr;
   };
 
+  void begin_output(std::span<const std::byte> message, Done done, LinkTransferResult* report);
+  void begin_input(std::span<std::byte> buffer, Done done, LinkTransferResult* report);
   void finish(Transfer& transfer, TrackId track);
+  /// Ends a transfer a reset forgot: its process, if one is blocked on it, resumes.
+  void cut_short(Transfer& transfer, TrackId track);
   void abandon_output();
   /// Adds the output in progress (its acknowledged bytes, its time so far) to the totals.
   void count_output();
@@ -90,7 +122,8 @@ private:
 };
 
 /// A pair of wires between two link ports, driven through the kernel's event queue by the
-/// framing machine. Bytes move only between powered ends over an unbroken cable.
+/// framing machine. Bytes move only between powered ends over a live wire; faults of a wire
+/// (dead, a flipped bit, a lost acknowledge) can be injected at any time.
 class Link : public EventHandler {
 public:
   /// `id` makes trace flow ids unique across links.
@@ -108,7 +141,22 @@ public:
   /// process of that node waiting on them is being killed anyway); powering on resets them.
   /// Setting the state an end already has changes nothing.
   void set_powered(int end, bool powered);
+  /// A broken cable: both wires dead (true) or both mended (false).
   void set_broken(bool broken);
+
+  /// Kills (`dead`) or mends the wire end `from_end` drives: nothing it puts on it arrives,
+  /// neither its data nor its acknowledges of the peer's data, so the peer's outputs stall
+  /// after their first byte. What was lost stays lost (the protocol has no retransmission): a
+  /// sender whose acknowledge was lost waits until a reset. A packet's fate is settled by its
+  /// start bit (LinkFraming::set_wire_dead).
+  void set_wire_dead(int from_end, bool dead);
+  /// The `nth_byte`-th data byte (0: the next) that end `from_end` starts sending from now on
+  /// arrives with bit `bit` (0..7) inverted: link packets carry no parity, so the receiver
+  /// stores it as it comes.
+  void flip_data_bit(int from_end, std::uint64_t nth_byte, unsigned bit);
+  /// The next acknowledge end `from_end` sends is lost on the wire: the peer's output waits
+  /// for it until a reset. Each call loses one more.
+  void lose_acknowledge(int from_end);
 
   void on_event(std::uint64_t tag) override;
 
@@ -123,6 +171,12 @@ private:
   void on_data_start(int sender);
   void on_data_end(int sender, bool accepted);
   void on_ack_end(int sender);
+  /// Inverts the bits due to be flipped in data byte `byte` of `sender`, now on the wire.
+  void apply_flips(int sender, std::uint64_t byte);
+  /// Data bytes `sender` may start before the next one with a flip pending.
+  std::uint64_t bytes_before_flip(int sender) const;
+  void note_lost_acknowledge(int end);
+  static void check_end(int end);
   void declare_tracks(TraceSink& sink);
   /// The kernel's sink with this link's tracks declared, or nullptr.
   TraceSink* trace();
@@ -134,6 +188,13 @@ private:
   std::array<std::byte, 2> on_wire_{};
   /// Flow id of the message whose last byte is on each wire, 0 otherwise.
   std::array<std::uint64_t, 2> last_byte_flow_{};
+  /// Data bytes each end has started, over all its outputs: what a flip's byte counts in.
+  std::array<std::uint64_t, 2> data_started_{};
+  struct BitFlip {
+    std::uint64_t byte = 0;
+    std::byte mask{};
+  };
+  std::array<std::vector<BitFlip>, 2> flips_;
   std::uint32_t id_;
   std::uint64_t messages_ = 0;
   bool tracks_declared_ = false;

@@ -38,8 +38,11 @@ struct LinkStep {
   Tick time = 0;
   /// data_end: the receiver had an input waiting and took the byte (otherwise the byte waits
   /// unacknowledged in the receiver's one-byte buffer, or was lost on a dead link).
-  /// ack_end: the sender was waiting for it (it was not reset meanwhile).
+  /// ack_end: the sender was waiting for it (it was not reset meanwhile) and it arrived.
   bool accepted = false;
+  /// data_start, ack_start: the packet will not arrive (its wire is dead, or it is an
+  /// acknowledge to be lost).
+  bool lost = false;
 };
 
 /// The INMOS link protocol between two ends (0 and 1) as a pure state machine of byte counts
@@ -80,12 +83,36 @@ public:
     ++generation_;
   }
   bool alive(int end) const { return ends_[end].alive; }
-  /// A broken cable: packets are sent but never arrive.
-  void set_broken(bool broken) {
-    broken_ = broken;
+
+  /// Kills or mends the wire `end` drives, which carries its data packets and its
+  /// acknowledges of the peer's data. A packet's fate is settled by its start bit: one that
+  /// starts on a dead wire is lost whole, one already on the wire when it dies still arrives
+  /// (the receiver commits to a byte, and acknowledges it, early in the packet).
+  void set_wire_dead(int end, bool dead) {
+    wire_dead_[end] = dead;
     ++generation_;
   }
-  bool broken() const { return broken_; }
+  bool wire_dead(int end) const { return wire_dead_[end]; }
+  /// A broken cable: both wires dead (packets are sent but never arrive); mending it mends both.
+  void set_broken(bool broken) {
+    wire_dead_ = {broken, broken};
+    ++generation_;
+  }
+  bool broken() const { return wire_dead_[0] && wire_dead_[1]; }
+  /// The next acknowledge `end` starts is lost on its wire (each call loses one more).
+  void lose_acknowledge(int end) {
+    ++acks_to_lose_[end];
+    ++generation_;
+  }
+
+  /// `resetch` on `end`'s output channel: forgets the bytes not yet sent and the acknowledge
+  /// awaited, so a new output may start. A data packet already on the wire still arrives;
+  /// acknowledges carry no byte number, so a late one counts for the next byte sent.
+  void reset_output(int end, Tick now);
+  /// `resetch` on `end`'s input channel: forgets the bytes still wanted, the byte waiting in
+  /// the buffer and an acknowledge not yet started (the peer's sender then waits for it
+  /// forever). A byte on the wire that was already taken is dropped when it arrives.
+  void reset_input(int end, Tick now);
 
   /// Time of the next step, kNever when nothing can happen without new offers.
   Tick next_time() const;
@@ -96,7 +123,8 @@ public:
   /// Called just after `sender` started a data packet. A one-way stream repeats itself byte
   /// after byte: when the machine stands now where it stood at that end's previous data start,
   /// its times shifted by one byte period and one byte fewer to send and to take (with nothing
-  /// offered, withdrawn, reset or broken in between), returns that period; otherwise nothing.
+  /// offered, withdrawn, reset or faulted in between, and no wire dead or acknowledge still to
+  /// be lost), returns that period; otherwise nothing.
   /// Either way this data start becomes the one the next call compares with.
   std::optional<Tick> stream_period(int sender);
   /// Jumps `bytes` byte periods of `sender`'s stream at once, as that many data packets,
@@ -119,6 +147,9 @@ private:
     Tick wire_free = 0;
     Tick data_end = kNever;     ///< end of the data packet on this end's wire
     bool data_accepted = false; ///< its receiver had taken it at the start bit
+    bool data_lost = false;     ///< it started on a dead wire
+    bool data_dropped = false;  ///< its receiver took it, then was reset
+    bool ack_lost = false;      ///< the acknowledge on this wire will not arrive
     Tick data_start = 0;
     Tick ack_end = kNever; ///< end of the acknowledge on this end's wire
     // Receiver side.
@@ -142,16 +173,19 @@ private:
   Tick data_start_time(int end) const;
   Tick ack_start_time(int end) const;
   void accept_in_flight(int receiver);
-  void start_data(int sender, Tick at);
+  /// start_data() and start_ack() return whether the packet will be lost.
+  bool start_data(int sender, Tick at);
   void end_data(int sender, LinkStep& step);
-  void start_ack(int receiver, Tick at);
+  bool start_ack(int receiver, Tick at);
   void end_ack(int receiver, LinkStep& step);
 
   LinkTiming timing_;
   std::array<End, 2> ends_{};
   Tick now_ = 0;
-  bool broken_ = false;
-  /// Counts the offers, withdrawals, resets and breaks: a stream repeats itself only between two.
+  /// By the end that drives the wire.
+  std::array<bool, 2> wire_dead_{};
+  std::array<std::uint32_t, 2> acks_to_lose_{};
+  /// Counts the offers, withdrawals, resets and faults: a stream repeats itself only between two.
   std::uint64_t generation_ = 0;
   std::array<Phase, 2> last_data_start_{};
 };
