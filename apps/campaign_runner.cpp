@@ -30,6 +30,18 @@ std::vector<std::string> powered_modules(const emu::PlatformSpec& platform) {
   return names;
 }
 
+void draw_link(overswitch::Fault& fault, const overswitch::FaultMix& mix,
+               overswitch::SplitMix& random) {
+  fault.link = mix.links[random.below(mix.links.size())];
+  fault.direction = mix.direction;
+  if (mix.down_for_s) {
+    const auto [shortest, longest] = *mix.down_for_s;
+    fault.duration = static_cast<emu::Tick>((shortest + random.unit() * (longest - shortest)) *
+                                            static_cast<double>(emu::kSecond));
+  }
+  fault.byte = random.below(mix.byte_within);
+}
+
 void check_modules(const overswitch::CampaignSpec& spec, const emu::PlatformSpec& platform) {
   const auto& modules = platform.overswitch->modules;
   for (const overswitch::FaultMix& mix : spec.faults)
@@ -63,7 +75,8 @@ std::unique_ptr<CampaignScene> supervised_scene(std::uint64_t seed, const SceneC
   if (!scene->golden.run.finished)
     throw CommandError(fmt::format("world seed {}: the fault-free cycle did not finish: {}", seed,
                                    scene->golden.run.abandoned.value_or("no reason given")));
-  if (!fault_free.overswitch().failovers().empty() || !scene->golden.run.halts.empty())
+  if (!fault_free.overswitch().failovers().empty() || !scene->golden.run.halts.empty() ||
+      !fault_free.troubles().empty())
     throw CommandError(fmt::format(
         "world seed {}: the fault-free cycle failed a module over{}", seed,
         scene->golden.run.halts.empty() ? std::string()
@@ -158,6 +171,8 @@ CampaignDraw CampaignRunner::draw(std::uint64_t run) const {
   const double share = mix->from_share + random.unit() * (mix->to_share - mix->from_share);
   d.fault.offset = static_cast<emu::Tick>(share * cycle);
   d.fault.draw = random.next();
+  if (overswitch::is_link_fault(mix->kind))
+    draw_link(d.fault, *mix, random);
   return d;
 }
 

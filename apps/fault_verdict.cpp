@@ -10,6 +10,7 @@ namespace marsokhod::apps {
 namespace {
 
 namespace emu = emulator;
+using overswitch::ReportedTrouble;
 
 bool same_path(const occam_port::CycleEmulation& a, const occam_port::CycleEmulation& b) {
   return a.result && b.result && a.result->plan.found == b.result->plan.found &&
@@ -78,7 +79,8 @@ Outcome classify(const FaultVerdict& v, const occam_port::CycleEmulation& run,
     return Outcome::unsafe;
   if (!v.path_equals_golden)
     return Outcome::sdc_safe;
-  return supervisor.overswitch().failovers().empty() ? Outcome::masked : Outcome::recovered;
+  return supervisor.overswitch().failovers().empty() && run.restarts == 0 ? Outcome::masked
+                                                                          : Outcome::recovered;
 }
 
 std::string reason_of(const occam_port::CycleEmulation& run,
@@ -122,20 +124,32 @@ FaultVerdict judge_fault_run(const GoldenRun& golden, const occam_port::CycleEmu
   FaultVerdict v;
   const auto& failovers = supervisor.overswitch().failovers();
   const auto& injected = supervisor.injected();
-  v.detected = !failovers.empty() || std::any_of(injected.begin(), injected.end(), edac_saw);
-  v.activated = !failures(run, supervisor).empty() ||
+  const auto& troubles = supervisor.troubles();
+  v.detected = !failovers.empty() || !troubles.empty() ||
+               std::any_of(injected.begin(), injected.end(), edac_saw);
+  // A link fault is known to have reached the program when a module reported the link.
+  v.activated = !failures(run, supervisor).empty() || !troubles.empty() ||
                 std::any_of(injected.begin(), injected.end(), reached_program);
   for (const overswitch::Failover& f : failovers) {
     const emu::Tick powered = f.detected;
     v.failovers.push_back({f.failed, f.spare, f.ok ? emu::to_seconds(f.booted - powered) : 0.0});
   }
-  if (!failovers.empty() && !supervisor.injected().empty())
-    v.detection_latency_s =
-        emu::to_seconds(failovers.front().detected - supervisor.injected().front().at);
+  // Found by a watchdog, a link's timeout or a checksum, whichever came first.
+  std::optional<emu::Tick> found;
+  if (!failovers.empty())
+    found = failovers.front().detected;
+  if (!troubles.empty())
+    found = std::min(found.value_or(troubles.front().at), troubles.front().at);
+  if (found && !injected.empty())
+    v.detection_latency_s = emu::to_seconds(*found - injected.front().at);
   const auto whole = std::find_if(failovers.begin(), failovers.end(),
                                   [](const overswitch::Failover& f) { return f.ok; });
   if (whole != failovers.end())
     v.recovery_s = emu::to_seconds(whole->booted - failovers.front().detected);
+  v.restarts = run.restarts;
+  for (const ReportedTrouble& t : troubles)
+    v.link_troubles.push_back(
+        {t.module, t.link, t.peer, occam_port::to_string(t.trouble), emu::to_seconds(t.at)});
   for (const occam_port::ModuleHalt& h : run.halts)
     v.halts.push_back({h.node, h.process, h.what, h.cause, emu::to_seconds(h.time)});
   v.path_equals_golden = run.finished && same_path(golden.run, run);
@@ -186,6 +200,16 @@ nlohmann::ordered_json verdict_json(const FaultVerdict& v) {
                             {"what", h.what},
                             {"cause", h.cause},
                             {"time_s", h.time_s}});
+  }
+  j["restarts"] = v.restarts;
+  if (!v.link_troubles.empty()) {
+    j["link_troubles"] = nlohmann::ordered_json::array();
+    for (const LinkTroubleFigure& t : v.link_troubles)
+      j["link_troubles"].push_back({{"module", t.module},
+                                    {"link", t.link},
+                                    {"peer", t.peer},
+                                    {"trouble", t.trouble},
+                                    {"time_s", t.time_s}});
   }
   j["path_equals_golden"] = v.path_equals_golden;
   j["unsafe"] = v.unsafe;

@@ -42,16 +42,28 @@ struct HaltFigure {
   double time_s = 0.0;
 };
 
+/// A link trouble a module reported: which link, to which module, what, and when.
+struct LinkTroubleFigure {
+  std::string module;
+  int link = 0;
+  std::string peer;
+  std::string trouble;
+  double time_s = 0.0;
+};
+
 struct FaultVerdict {
   Outcome outcome = Outcome::error;
   std::string reason; ///< why an error or a hang; empty otherwise
   /// The fault stopped a module: a hang or power loss struck, or a leak made it halt.
   bool activated = false;
   bool detected = false;
-  std::optional<double> detection_latency_s; ///< from the first fault to the first watchdog expiry
-  std::optional<double> recovery_s;          ///< from that expiry to the pair being whole again
+  /// From the first fault to the first watchdog expiry or link trouble reported.
+  std::optional<double> detection_latency_s;
+  std::optional<double> recovery_s; ///< from the first expiry to the pair being whole again
   std::vector<FailoverFigure> failovers;
   std::vector<HaltFigure> halts;
+  int restarts = 0; ///< times the cycle was started again (after a failover or a link trouble)
+  std::vector<LinkTroubleFigure> link_troubles;
   bool path_equals_golden = false;
   bool unsafe = false;
   bool golden_unsafe = false;

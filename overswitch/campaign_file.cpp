@@ -100,23 +100,65 @@ void read_memory_target(io::TomlTable& fault, FaultMix& mix) {
     mix.memory.stuck_value = integer(fault, "value", 0, 1, 1) == 1;
 }
 
+/// Which links, which wire, and how long a link fault lasts.
+void read_link_target(io::TomlTable& fault, FaultMix& mix) {
+  if (const toml::array* links = fault.optional_array("links")) {
+    mix.links.clear();
+    for (const toml::node& link : *links) {
+      const std::optional<std::int64_t> index = link.value_exact<std::int64_t>();
+      if (!index || *index < 0 || *index > 3)
+        fault.fail("links", "every link is a number from 0 to 3");
+      mix.links.push_back(static_cast<int>(*index));
+    }
+    if (mix.links.empty())
+      fault.fail("links", "list at least one link, e.g. [0]");
+  }
+  const bool one_wire = mix.kind != Fault::Kind::link_down;
+  const std::string dir = text(fault, "dir", one_wire ? "out" : "both");
+  if (dir == "out")
+    mix.direction = LinkDirection::out;
+  else if (dir == "in")
+    mix.direction = LinkDirection::in;
+  else if (dir == "both" && !one_wire)
+    mix.direction = LinkDirection::both;
+  else
+    fault.fail("dir", fmt::format("'{}' is no wire of this fault ({})", dir,
+                                  one_wire ? "out, in" : "out, in, both"));
+  const std::optional<double> shortest = real(fault, "down_for_min_s", 1e-6, 3600.0);
+  const std::optional<double> longest = real(fault, "down_for_max_s", 1e-6, 3600.0);
+  if ((shortest || longest) && mix.kind != Fault::Kind::link_down)
+    fault.fail(shortest ? "down_for_min_s" : "down_for_max_s", "only a link down lasts a while");
+  if (shortest.has_value() != longest.has_value())
+    fault.fail(shortest ? "down_for_max_s" : "down_for_min_s",
+               "give both down_for_min_s and down_for_max_s, or neither (for good)");
+  if (shortest && *longest < *shortest)
+    fault.fail("down_for_max_s", "must be at least down_for_min_s");
+  if (shortest)
+    mix.down_for_s = std::pair(*shortest, *longest);
+  if (mix.kind == Fault::Kind::link_bit)
+    mix.byte_within =
+        static_cast<std::uint64_t>(integer(fault, "byte_within", 1, 1'000'000'000, 1000));
+}
+
 FaultMix read_fault(io::TomlTable& fault) {
-  static const std::map<std::string, Fault::Kind> kKinds{{"hang", Fault::Kind::hang},
-                                                         {"power", Fault::Kind::power_loss},
-                                                         {"leak", Fault::Kind::leak},
-                                                         {"seu", Fault::Kind::upset},
-                                                         {"stuck", Fault::Kind::stuck}};
+  static const std::map<std::string, Fault::Kind> kKinds{
+      {"hang", Fault::Kind::hang},        {"power", Fault::Kind::power_loss},
+      {"leak", Fault::Kind::leak},        {"seu", Fault::Kind::upset},
+      {"stuck", Fault::Kind::stuck},      {"link", Fault::Kind::link_down},
+      {"linkbit", Fault::Kind::link_bit}, {"ackloss", Fault::Kind::ack_lost}};
   FaultMix mix;
   mix.line = fault.line();
   const std::string kind = text(fault, "kind", "");
   const auto found = kKinds.find(kind);
   if (found == kKinds.end())
     fault.fail("kind", fmt::format("'{}' is no fault kind of a campaign (hang, power, leak, seu, "
-                                   "stuck)",
+                                   "stuck, link, linkbit, ackloss)",
                                    kind));
   mix.kind = found->second;
   if (is_memory_fault(mix.kind))
     read_memory_target(fault, mix);
+  if (is_link_fault(mix.kind))
+    read_link_target(fault, mix);
   mix.weight = real(fault, "weight", 1e-9, 1e9).value_or(1.0);
   if (const toml::array* modules = fault.optional_array("modules"))
     for (const toml::node& module : *modules) {

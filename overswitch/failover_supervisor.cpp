@@ -39,9 +39,13 @@ void FailoverSupervisor::attach(occam_port::CycleControl& control) {
   overswitch_->on_booted([this](const Failover& failover) { booted(failover); });
   overswitch_->on_safe_stop([this] {
     const std::string why = overswitch_->events().back().detail;
-    control_->kernel().schedule_after(0, emulator::event_priority::normal,
-                                      [this, why] { control_->abandon(why); });
+    control_->kernel().schedule_after(
+        0, emulator::event_priority::normal, [this, why] { control_->abandon(why); });
   });
+  control.on_link_trouble(
+      [this](const std::string& module, int link, occam_port::LinkTrouble trouble) {
+        link_trouble(module, link, trouble);
+      });
   control.on_heartbeat([this](const std::string& node) {
     const auto& names = platform_->overswitch->modules;
     if (std::find(names.begin(), names.end(), node) != names.end())
@@ -128,6 +132,7 @@ void FailoverSupervisor::inject(const Fault& fault) {
   case Fault::Kind::link_down:
   case Fault::Kind::link_bit:
   case Fault::Kind::ack_lost:
+    strike_link(*node, injected_.back());
     return;
   }
 }

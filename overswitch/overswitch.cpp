@@ -24,6 +24,12 @@ const char* to_string(OverswitchEvent::Kind kind) {
     return "boot failed";
   case OverswitchEvent::Kind::safe_stop:
     return "safe stop";
+  case OverswitchEvent::Kind::link_trouble:
+    return "link trouble";
+  case OverswitchEvent::Kind::restarted:
+    return "cycle restarted";
+  case OverswitchEvent::Kind::declared_failed:
+    return "declared failed";
   }
   return "?";
 }
@@ -111,6 +117,22 @@ void Overswitch::expire(Module& m) {
       fmt::format("no heartbeat for {} us", emulator::to_microseconds(spec_.watchdog_timeout)));
   fail(m, "watchdog");
   take_spare(Failover{m.node->name(), {}, {}, kernel_->now(), 0, false});
+}
+
+void Overswitch::declare_failed(const emulator::Node& module, const std::string& why) {
+  Module& m = module_of(module);
+  if (m.state != State::running || safe_stopped_)
+    return;
+  log(OverswitchEvent::Kind::declared_failed, m, why);
+  fail(m, "declared failed");
+  take_spare(Failover{m.node->name(), {}, {}, kernel_->now(), 0, false});
+}
+
+void Overswitch::note(OverswitchEvent::Kind kind, const std::string& module, std::string detail) {
+  events_.push_back({kernel_->now(), kind, module, std::move(detail)});
+  if (emulator::TraceSink* sink = kernel_->trace())
+    sink->instant(sink->track("overswitch", "events"), kernel_->now(),
+                  fmt::format("{}: {}", to_string(kind), module), events_.back().detail);
 }
 
 // A failed module stays off: the overswitch never powers it again.

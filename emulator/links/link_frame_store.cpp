@@ -19,7 +19,7 @@ FrameStore::FrameStore(LinkNetwork& network, const DeviceSpec& device, ImageSour
     LinkPort* port = network.port(device_.name, link);
     if (port == nullptr)
       continue;
-    servers_.push_back(std::make_unique<Server>(Server{port, link, std::byte{}, {}, {}}));
+    servers_.push_back(std::make_unique<Server>(Server{port, link, std::byte{}, {}, {}, {}}));
     listen(*servers_.back());
   }
 }
@@ -38,6 +38,14 @@ void FrameStore::listen(Server& server) {
 void FrameStore::answer(Server& server) {
   if (server.request == kUploadRequest) {
     server.port->start_input(server.length, [this, &server] { receive_upload(server); });
+    return;
+  }
+  if (server.request == kReport) {
+    server.port->start_input(server.report, [this, &server] {
+      if (report_sink_)
+        report_sink_(server.link, server.report[0], server.report[1]);
+      listen(server);
+    });
     return;
   }
   if (server.request == kHeartbeat) {

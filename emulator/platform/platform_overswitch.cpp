@@ -62,6 +62,11 @@ OverswitchSpec read_overswitch(io::TomlTable& table, const PlatformSpec& platfor
       table.integer_in<std::int64_t>("boot_allowance_us", limits::kMinOverswitchUs,
                                      limits::kMaxOverswitchUs) *
       kMicrosecond;
+  if (const std::optional<std::int64_t> timeout = table.optional_integer("link_timeout_us")) {
+    spec.link_timeout = table.integer_in<std::int64_t>("link_timeout_us", limits::kMinOverswitchUs,
+                                                       limits::kMaxOverswitchUs) *
+                        kMicrosecond;
+  }
   if (spec.watchdog_timeout <= spec.heartbeat_period)
     table.fail("watchdog_timeout_us",
                "must be longer than heartbeat_period_us, or a healthy module would be failed");

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cstring>
 #include <stdexcept>
 
@@ -31,9 +33,54 @@ void copy_block(void* destination, const void* source) {
     std::memcpy(to->data, from->source, from->size);
 }
 
+/// The program's checksum of a message: the 32-bit sum of its words, the last one padded with
+/// zero bytes; any single bit inverted on the wire changes it.
+std::uint32_t word_sum(std::span<const std::byte> bytes) {
+  std::uint32_t sum = 0;
+  for (std::size_t i = 0; i < bytes.size(); i += 4) {
+    std::uint32_t word = 0;
+    std::memcpy(&word, bytes.data() + i, std::min<std::size_t>(4, bytes.size() - i));
+    sum += word;
+  }
+  return sum;
+}
+
+/// The sum's cost: occam's `sum := sum PLUS msg[i]` over the message's words compiles to ldnl,
+/// sum and lend per word, the word read from external memory.
+void charge_sum(emulator::Node& node, std::size_t bytes) {
+  const std::uint64_t words = (bytes + 3) / 4;
+  emulator::InstructionMix mix;
+  mix.add(emulator::Instruction::ldnl, words)
+      .add(emulator::Instruction::sum, words)
+      .add(emulator::Instruction::lend_loop, words);
+  mix.external_accesses = words;
+  node.compute(mix);
+}
+
+/// The timer half of OutputOrFail.t: at the deadline, resetch on the output's link; gone with
+/// the output however it ends (a kill unwinds through it).
+class OutputDeadline {
+public:
+  OutputDeadline(emulator::Kernel& kernel, emulator::LinkPort& port, emulator::Tick after)
+      : kernel_(kernel), event_(kernel.schedule_after(after, emulator::event_priority::timer,
+                                                      [&port] { port.reset_output(); })) {}
+  OutputDeadline(const OutputDeadline&) = delete;
+  OutputDeadline& operator=(const OutputDeadline&) = delete;
+  ~OutputDeadline() { kernel_.cancel(event_); }
+
+private:
+  emulator::Kernel& kernel_;
+  emulator::EventId event_;
+};
+
 } // namespace
 
 BlockChannel::BlockChannel(std::string name) : channel_(std::move(name)) {}
+
+void BlockChannel::guard(const LinkGuard& guard, TroubleReport report) {
+  guard_ = guard;
+  report_ = std::move(report);
+}
 
 void BlockChannel::place_on_link(emulator::LinkPort& sender, emulator::LinkPort& receiver) {
   sender_ = &sender;
@@ -57,8 +104,37 @@ void BlockChannel::send(std::span<const std::byte> block) {
     channel_.send(block);
     return;
   }
-  emulator::Node::current().execute(emulator::Instruction::out);
-  sender_->output(block);
+  emulator::Node& node = emulator::Node::current();
+  node.execute(emulator::Instruction::out);
+  output_guarded(block);
+  if (!guard_.checksums)
+    return;
+  charge_sum(node, block.size());
+  const std::uint32_t sum = word_sum(block);
+  std::array<std::byte, 4> bytes{};
+  std::memcpy(bytes.data(), &sum, bytes.size());
+  node.execute(emulator::Instruction::out);
+  output_guarded(bytes);
+}
+
+void BlockChannel::output_guarded(std::span<const std::byte> bytes) {
+  if (!guard_.output_timeout) {
+    sender_->output(bytes);
+    return;
+  }
+  const OutputDeadline deadline(emulator::Node::current().kernel(), *sender_,
+                                *guard_.output_timeout);
+  if (!sender_->output(bytes).complete)
+    stop_on(*sender_, LinkTrouble::timeout);
+}
+
+// occam's STOP once the overswitch has been told: the process waits for ever, until the cycle
+// is restarted around it.
+void BlockChannel::stop_on(emulator::LinkPort& port, LinkTrouble trouble) {
+  if (report_)
+    report_(port, trouble);
+  emulator::Node::current().kernel().block(emulator::WaitInfo{emulator::WaitKind::other, nullptr});
+  throw std::logic_error("channel " + name() + ": a stopped process was woken");
 }
 
 void BlockChannel::receive(std::span<std::byte> block) {
@@ -66,8 +142,19 @@ void BlockChannel::receive(std::span<std::byte> block) {
     channel_.receive(block);
     return;
   }
-  emulator::Node::current().execute(emulator::Instruction::in);
+  emulator::Node& node = emulator::Node::current();
+  node.execute(emulator::Instruction::in);
   receiver_->input(block);
+  if (!guard_.checksums)
+    return;
+  std::array<std::byte, 4> bytes{};
+  node.execute(emulator::Instruction::in);
+  receiver_->input(bytes);
+  charge_sum(node, block.size());
+  std::uint32_t sum = 0;
+  std::memcpy(&sum, bytes.data(), bytes.size());
+  if (sum != word_sum(block))
+    stop_on(*receiver_, LinkTrouble::checksum);
 }
 
 } // namespace marsokhod::occam_port

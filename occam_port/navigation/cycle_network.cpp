@@ -67,6 +67,19 @@ void build_network(CycleNetwork& net, const emulator::PlatformSpec& platform,
       if (net.heartbeat_sink)
         net.heartbeat_sink(node_at(platform, name, link));
     });
+    // A report names a link of the module and what went wrong; anything else is no report the
+    // program writes and is ignored, as a device ignores a request it does not know.
+    net.devices.back()->set_report_sink(
+        [&net, &platform, name](int link, std::byte first, std::byte second) {
+          const int trouble = std::to_integer<int>(second);
+          const int module_link = std::to_integer<int>(first);
+          if (!net.trouble_sink || module_link > 3 ||
+              (trouble != static_cast<int>(LinkTrouble::timeout) &&
+               trouble != static_cast<int>(LinkTrouble::checksum)))
+            return;
+          net.trouble_sink(node_at(platform, name, link), module_link,
+                           static_cast<LinkTrouble>(trouble));
+        });
   }
   for (const emulator::NodeSpec& node : platform.nodes) {
     const emulator::WireSpec* wire = device_wire(platform, node.name);

@@ -37,6 +37,7 @@ struct CycleNetwork {
   std::vector<DeviceUpload> uploads;
   std::vector<std::vector<std::byte>> telemetry;
   std::function<void(const std::string& node)> heartbeat_sink;
+  std::function<void(const std::string& node, int link, LinkTrouble trouble)> trouble_sink;
   std::vector<std::unique_ptr<emulator::Node>> nodes;
 
   /// std::out_of_range for a node the platform does not have.

@@ -6,11 +6,13 @@
 #include "navigation/program_processes.hpp"
 
 #include "marsokhod/emulator/links/link.hpp"
+#include "marsokhod/emulator/links/link_frame_store.hpp"
 #include "marsokhod/emulator/memory/memory_arena_fault.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <exception>
 #include <stdexcept>
@@ -99,10 +101,31 @@ void CycleRun::place_channels() {
     if (wire == nullptr || wire->broken)
       throw std::logic_error("channel " + channel.name + " has no wire from " + from + " to " + to);
     const bool forward = wire->a.owner == from;
-    cycle.channels.named(channel.name)
-        ->place_on_link(net_.links->require_port(from, forward ? wire->a.link : wire->b.link),
-                        net_.links->require_port(to, forward ? wire->b.link : wire->a.link));
+    BlockChannel* placed = cycle.channels.named(channel.name);
+    placed->place_on_link(net_.links->require_port(from, forward ? wire->a.link : wire->b.link),
+                          net_.links->require_port(to, forward ? wire->b.link : wire->a.link));
+    if (setup_->supervisor != nullptr)
+      placed->guard(
+          setup_->supervisor->link_guard(),
+          [this](emulator::LinkPort& port, LinkTrouble trouble) { report_trouble(port, trouble); });
   }
+}
+
+// From the process that met the trouble: the report goes to the overswitch on its module's
+// device link, header and bytes in one turn of the shared output.
+void CycleRun::report_trouble(emulator::LinkPort& port, LinkTrouble trouble) {
+  emulator::Node& node = emulator::Node::current();
+  int link = 0;
+  while (link < emulator::Node::kLinks && node.link(link) != &port)
+    ++link;
+  emulator::SharedOutput* output = device_output(node.name());
+  if (output == nullptr)
+    return;
+  const std::array<std::byte, 3> report{emulator::FrameStore::kReport,
+                                        std::byte(static_cast<unsigned char>(link)),
+                                        std::byte(static_cast<unsigned char>(trouble))};
+  node.execute(emulator::Instruction::out);
+  output->output(report);
 }
 
 // The code, and the mission state the last cycle left, are in every module's memory before the
@@ -255,6 +278,26 @@ void CycleRun::on_heartbeat(std::function<void(const std::string& node)> sink) {
   net_.heartbeat_sink = std::move(sink);
 }
 
+void CycleRun::on_link_trouble(
+    std::function<void(const std::string& node, int link, LinkTrouble trouble)> sink) {
+  net_.trouble_sink = std::move(sink);
+}
+
+// A message cut short on a link, at either end, must not run into the restarted program's.
+void CycleRun::reset_channel_links() {
+  for (const ProgramShape::Channel& channel : navigation_program_shape().channels) {
+    const std::string& from = placement_.node_of(channel.from);
+    const std::string& to = placement_.node_of(channel.to);
+    if (from == to || !net_.node(from).running() || !net_.node(to).running())
+      continue;
+    const emulator::WireSpec* wire = platform_->wire_between(from, to);
+    if (wire == nullptr)
+      continue;
+    net_.links->require_port(wire->a.owner, wire->a.link).reset();
+    net_.links->require_port(wire->b.owner, wire->b.link).reset();
+  }
+}
+
 std::size_t CycleRun::code_bytes(const std::string& node) const {
   const auto role = roles_.find(node);
   if (role == roles_.end())
@@ -289,6 +332,7 @@ void CycleRun::restart(const std::map<std::string, std::string>& moved) {
   for (const auto& [node, role] : roles_)
     if (net_.node(node).running())
       reset_device_link(node);
+  reset_channel_links();
   ++restarts_;
   new_state();
   spawn_processes();

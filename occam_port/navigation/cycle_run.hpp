@@ -44,6 +44,8 @@ public:
   emulator::Node& node(const std::string& name) override { return net_.node(name); }
   emulator::SharedOutput* device_output(const std::string& node) override;
   void on_heartbeat(std::function<void(const std::string& node)> sink) override;
+  void on_link_trouble(
+      std::function<void(const std::string& node, int link, LinkTrouble trouble)> sink) override;
   std::size_t code_bytes(const std::string& node) const override;
   const std::string& node_of(const std::string& process) const override;
   void restart(const std::map<std::string, std::string>& moved) override;
@@ -59,6 +61,9 @@ private:
   void spawn_processes();
   void kill_program();
   void reset_device_link(const std::string& node);
+  /// Both ends of every link the program's channels are placed on.
+  void reset_channel_links();
+  void report_trouble(emulator::LinkPort& port, LinkTrouble trouble);
   void process_ended();
   void halt_on_error(emulator::Node& node, CycleState& cycle, ModuleHalt halt);
   /// Places a copy of the mission state record in `node`'s memory; false after a memory fault.

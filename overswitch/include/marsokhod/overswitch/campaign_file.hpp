@@ -31,6 +31,14 @@ struct FaultMix {
   double to_share = 1.0;
   /// Upsets and stuck bits: where the bit is drawn.
   MemoryTarget memory;
+  /// Link faults: the module's links drawn from (default: link 0, the module0-module1 wire of
+  /// the onboard placement), the wire cut (LinkDirection), and for a link down, the range its
+  /// duration is drawn from (nothing: for good). A flipped bit strikes a data byte drawn from
+  /// the first `byte_within` bytes after the strike.
+  std::vector<int> links{0};
+  LinkDirection direction = LinkDirection::both;
+  std::optional<std::pair<double, double>> down_for_s;
+  std::uint64_t byte_within = 1;
   int line = 0;
 };
 

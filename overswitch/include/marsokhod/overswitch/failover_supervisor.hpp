@@ -8,6 +8,7 @@
 #include "marsokhod/overswitch/overswitch.hpp"
 #include "marsokhod/overswitch/protection.hpp"
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +24,15 @@ struct InjectedFault {
   std::optional<MemoryHit> hit;
   /// What the fault did at once ("module hung: its code was struck", "EDAC corrected it"...).
   std::string effect;
+};
+
+/// A link trouble a module reported to the overswitch.
+struct ReportedTrouble {
+  emulator::Tick at = 0;
+  std::string module;
+  int link = 0;
+  std::string peer; ///< the module at the link's other end
+  occam_port::LinkTrouble trouble = occam_port::LinkTrouble::timeout;
 };
 
 /// Supervises one emulated cycle on a platform with an [overswitch] table: starts a heartbeat
@@ -43,6 +53,8 @@ public:
   void record_memory(MemoryTimeline& timeline) { timeline_ = &timeline; }
 
   void attach(occam_port::CycleControl& control) override;
+  /// The platform's link timeout, and checksums when the protection has them.
+  occam_port::LinkGuard link_guard() const override;
   void stage_started(const std::string& process, emulator::Tick at) override;
   /// Winds the heartbeats and watchdogs down: at once, or, when a fault has struck that no
   /// watchdog has seen yet, after long enough for one to (a period for the last kick, the
@@ -53,6 +65,8 @@ public:
   /// After the run: the overswitch's log and failovers, and the faults that happened.
   const Overswitch& overswitch() const { return *overswitch_; }
   const std::vector<InjectedFault>& injected() const { return injected_; }
+  /// The link troubles the modules reported, in order.
+  const std::vector<ReportedTrouble>& troubles() const { return troubles_; }
   /// An injected fault that named no node of the platform or no stage of the program.
   const std::optional<std::string>& error() const { return error_; }
 
@@ -62,6 +76,8 @@ private:
   void leak(emulator::Node& node, const Fault& fault);
   void strike(emulator::Node& node, InjectedFault& injected);
   void protect(emulator::Node& module);
+  void strike_link(emulator::Node& node, InjectedFault& injected);
+  void link_trouble(const std::string& module, int link, occam_port::LinkTrouble trouble);
   void boot(emulator::Node& spare, emulator::Node& from, std::function<void()> done);
   void booted(const Failover& failover);
   void wind_down();
@@ -78,6 +94,10 @@ private:
   std::vector<InjectedFault> injected_;
   std::optional<std::string> error_;
   MemoryTimeline* timeline_ = nullptr;
+  std::vector<ReportedTrouble> troubles_;
+  /// Troubles reported on each wire ("module0-module1"): the first restarts the cycle on the
+  /// same pair, the next fails the module at the far end.
+  std::map<std::string, int> wire_troubles_;
   /// Tells the heartbeats to end at their next beat.
   bool heartbeats_stop_ = false;
 };

@@ -20,6 +20,9 @@ struct OverswitchEvent {
     booted,           ///< the spare runs: the pair is whole again
     boot_failed,      ///< the spare did not run within the boot allowance
     safe_stop,        ///< no pair can be formed: the rover stands still, remote control takes over
+    link_trouble,     ///< a module reported a link: an output not acknowledged, a bad checksum
+    restarted,        ///< the cycle was started again on the same pair (after a link trouble)
+    declared_failed,  ///< a module was failed on what its partner reported of their link
   };
   emulator::Tick time = 0;
   Kind kind = Kind::watchdog_expired;
@@ -67,6 +70,11 @@ public:
   void kick(const emulator::Node& module);
   /// Disarms every watchdog: the run is over (before its kernel goes).
   void stop();
+  /// Fails a running module on what its partner reported (a link between them that keeps
+  /// failing): powered off for good and replaced by a spare, as on a watchdog's expiry.
+  void declare_failed(const emulator::Node& module, const std::string& why);
+  /// Adds an event of the supervisor's to the overswitch's log (a link trouble, a restart).
+  void note(OverswitchEvent::Kind kind, const std::string& module, std::string detail);
 
   /// The running modules, in the overswitch's order.
   std::vector<emulator::Node*> running() const;

@@ -19,7 +19,9 @@ namespace marsokhod::emulator {
 /// little-endian length, then that many bytes, handed to the upload sink (telemetry, the wheel
 /// commands' log); an upload longer than kMaxUploadBytes is refused and the link ignored from
 /// then on. The request kHeartbeat is a module's heartbeat for the overswitch that sits on
-/// the device links: it is handed to the heartbeat sink and gets no answer. A request for a camera
+/// the device links: it is handed to the heartbeat sink and gets no answer. The request kReport
+/// is followed by two bytes a module reports to the overswitch (a link of its and what went
+/// wrong there): handed to the report sink, no answer. A request for a camera
 /// it does not have gets no answer. It runs on the link engines alone (no process), so it never
 /// shows in a deadlock report.
 class FrameStore {
@@ -31,9 +33,12 @@ public:
 
   /// Receives each heartbeat with the device link it came in on.
   using HeartbeatSink = std::function<void(int link)>;
+  /// Receives each report with the device link it came in on and its two bytes.
+  using ReportSink = std::function<void(int link, std::byte first, std::byte second)>;
 
   static constexpr std::byte kUploadRequest{0xFF};
   static constexpr std::byte kHeartbeat{0xFE};
+  static constexpr std::byte kReport{0xFD};
   static constexpr std::size_t kMaxUploadBytes = std::size_t{16} << 20;
 
   FrameStore(LinkNetwork& network, const DeviceSpec& device, ImageSource source,
@@ -43,6 +48,7 @@ public:
 
   std::size_t image_bytes() const;
   void set_heartbeat_sink(HeartbeatSink sink) { heartbeat_sink_ = std::move(sink); }
+  void set_report_sink(ReportSink sink) { report_sink_ = std::move(sink); }
   /// Resets the device's end of `link` (its engines forget what they were doing) and listens
   /// for a request again: what the overswitch does to a module's device link when it restarts
   /// the program, so that a message cut short does not run into the next.
@@ -56,6 +62,7 @@ private:
     int link = 0;
     std::byte request{};
     std::array<std::byte, 4> length{};
+    std::array<std::byte, 2> report{};
     std::vector<std::byte> image;
   };
   void listen(Server& server);
@@ -66,6 +73,7 @@ private:
   ImageSource source_;
   UploadSink uploads_sink_;
   HeartbeatSink heartbeat_sink_;
+  ReportSink report_sink_;
   std::size_t uploads_ = 0;
   std::vector<std::unique_ptr<Server>> servers_;
   std::size_t served_ = 0;

@@ -106,6 +106,9 @@ struct OverswitchSpec {
   Tick heartbeat_period = 0; ///< a powered module's heartbeat process kicks its watchdog this often
   Tick watchdog_timeout = 0; ///< a watchdog not kicked for this long declares its module failed
   Tick boot_allowance = 0;   ///< a spare not running this long after its power-on has failed
+  /// A message on a link between modules not acknowledged this long after its output began is
+  /// given up and reported (OutputOrFail); nothing: the program waits on its links for ever.
+  std::optional<Tick> link_timeout;
   int line = 0;
 };
 

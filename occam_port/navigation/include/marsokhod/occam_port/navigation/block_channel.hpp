@@ -3,9 +3,11 @@
 #pragma once
 
 #include "marsokhod/occam_port/channel.hpp"
+#include "marsokhod/occam_port/navigation/link_guard.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 
@@ -31,6 +33,12 @@ public:
   void place_on_link(emulator::LinkPort& sender, emulator::LinkPort& receiver);
   bool external() const { return sender_ != nullptr; }
 
+  /// Called in a process with the port a guarded message failed on and what went wrong; the
+  /// process stops once it returns.
+  using TroubleReport = std::function<void(emulator::LinkPort& port, LinkTrouble trouble)>;
+  /// Guards the channel's messages on its link as `guard` says (in memory it changes nothing).
+  void guard(const LinkGuard& guard, TroubleReport report);
+
   /// `c ! block`: returns once the receiver has the bytes.
   void send(std::span<const std::byte> block);
   /// `c ? block`: the block must have the sender's length (std::logic_error otherwise: the two
@@ -50,8 +58,14 @@ private:
   };
 
   Internal channel_;
+  /// Sends on the link, giving the message up at the guard's timeout.
+  void output_guarded(std::span<const std::byte> bytes);
+  [[noreturn]] void stop_on(emulator::LinkPort& port, LinkTrouble trouble);
+
   emulator::LinkPort* sender_ = nullptr;
   emulator::LinkPort* receiver_ = nullptr;
+  LinkGuard guard_;
+  TroubleReport report_;
   std::uint64_t bytes_ = 0;
   std::uint64_t blocks_ = 0;
 };

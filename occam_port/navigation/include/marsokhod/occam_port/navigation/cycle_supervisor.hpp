@@ -6,10 +6,12 @@
 #include "marsokhod/emulator/links/shared_output.hpp"
 #include "marsokhod/emulator/node/node.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/occam_port/navigation/link_guard.hpp"
 
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace marsokhod::occam_port {
@@ -29,6 +31,10 @@ public:
   virtual emulator::SharedOutput* device_output(const std::string& node) = 0;
   /// `sink` receives the name of the node whose heartbeat byte reached a device link.
   virtual void on_heartbeat(std::function<void(const std::string& node)> sink) = 0;
+  /// `sink` receives each link trouble a process reported over its device link: the node, its
+  /// link and what went wrong.
+  virtual void on_link_trouble(
+      std::function<void(const std::string& node, int link, LinkTrouble trouble)> sink) = 0;
   /// The bytes a spare taking `node`'s place must be booted with: the program's code on it and
   /// the mission state record; 0 for a node that runs none of the program.
   virtual std::size_t code_bytes(const std::string& node) const = 0;
@@ -36,9 +42,10 @@ public:
   virtual const std::string& node_of(const std::string& process) const = 0;
 
   /// Starts the cycle again from its first process, at once: kills the program's processes on
-  /// every node, resets the device links of the nodes that run it, and starts them with every
-  /// process of a node named in `moved` placed on its replacement. The replacement must be
-  /// running and hold the code (booted); channels go on the wires joining the new nodes.
+  /// every node, resets the device links of the nodes that run it and both ends of the links its
+  /// channels used, and starts them with every process of a node named in `moved` placed on its
+  /// replacement (`moved` empty: on the same nodes). The replacement must be running and hold the
+  /// code (booted); channels go on the wires joining the new nodes.
   virtual void restart(const std::map<std::string, std::string>& moved) = 0;
   /// Halts `node` at once, as HaltOnError does on an error the hardware flags (the EDAC's
   /// uncorrectable error): its processes stop and its links go silent; the halt is reported
@@ -56,6 +63,8 @@ public:
   virtual ~CycleSupervisor() = default;
   /// The network is built, the program about to start; the control lives for the whole run.
   virtual void attach(CycleControl& control) = 0;
+  /// How the program guards its messages on links (asked once, before the program starts).
+  virtual LinkGuard link_guard() const { return {}; }
   /// A process of the program had its input and starts its stage (after a restart, again).
   virtual void stage_started(const std::string& /*process*/, emulator::Tick /*at*/) {}
   /// The program's last process has ended. The run goes on while anything is left to happen
