@@ -1,7 +1,8 @@
-// Single-fault runs of the hang-power campaign (campaigns/hang-power.toml): the host time of one
-// run (an onboard cycle with its heartbeats, a fault, the failover and the restart, judged
-// against the fault-free run), and of the fault-free supervised cycle it is judged against.
-// Runs per minute per core are 60 s over the first; `campaign --jobs 2` prints what two workers
+// Single-fault runs of the shipped campaigns: the host time of one run (an onboard cycle with its
+// heartbeats, a fault and what the overswitch does about it, judged against the fault-free run)
+// for the hang-power, links, seu-cruise and seu-edac campaigns; the upset campaigns twice, with
+// the runs their fault cannot change skipped (as `campaign` does) and all emulated (--no-skip).
+// Runs per minute per core are 60 s over the time; `campaign --jobs 2` prints what two workers
 // reach. Target: at least 1,000 runs per minute with two jobs, so at least 500 per core.
 
 #include "campaign_runner.hpp"
@@ -13,7 +14,9 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <string>
 
 namespace {
 
@@ -26,33 +29,54 @@ struct Campaign {
   std::unique_ptr<apps::CampaignRunner> runner;
 };
 
-const Campaign& campaign() {
-  static const Campaign made = [] {
-    Campaign c;
-    c.spec = overswitch::load_campaign(std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "campaigns" /
-                                       "hang-power.toml");
-    c.platform = emulator::load_platform(emulator::find_platform_file("onboard.toml"));
-    c.placement = occam_port::load_placement(occam_port::default_placement_file(c.platform),
-                                             c.platform, occam_port::navigation_program_shape());
-    return c;
-  }();
-  return made;
+/// The campaign file `name` and its runner, made once.
+const Campaign& campaign(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<Campaign>> made;
+  std::unique_ptr<Campaign>& c = made[name];
+  if (c)
+    return *c;
+  c = std::make_unique<Campaign>();
+  c->spec = overswitch::load_campaign(std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "campaigns" /
+                                      (name + ".toml"));
+  c->platform = emulator::load_platform(emulator::find_platform_file("onboard.toml"));
+  c->placement = occam_port::load_placement(occam_port::default_placement_file(c->platform),
+                                            c->platform, occam_port::navigation_program_shape());
+  c->runner = std::make_unique<apps::CampaignRunner>(c->spec, c->platform, c->placement, nullptr);
+  return *c;
 }
 
-const apps::CampaignRunner& runner() {
-  static const std::unique_ptr<apps::CampaignRunner> made = [] {
-    const Campaign& c = campaign();
-    return std::make_unique<apps::CampaignRunner>(c.spec, c.platform, c.placement, nullptr);
-  }();
-  return *made;
+void fault_runs(benchmark::State& state, const std::string& name, bool skip) {
+  const apps::CampaignRunner& r = *campaign(name).runner;
+  std::uint64_t k = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(r.run(k++, nullptr, skip));
+  state.counters["runs_per_minute"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * 60.0, benchmark::Counter::kIsRate);
 }
 
 void BM_HangPowerFaultRun(benchmark::State& state) {
-  const apps::CampaignRunner& r = runner();
-  std::uint64_t k = 0;
-  for (auto _ : state)
-    benchmark::DoNotOptimize(r.run(k++, nullptr));
+  fault_runs(state, "hang-power", true);
 }
 BENCHMARK(BM_HangPowerFaultRun)->Unit(benchmark::kMillisecond);
+
+void BM_LinkFaultRun(benchmark::State& state) {
+  fault_runs(state, "links", true);
+}
+BENCHMARK(BM_LinkFaultRun)->Unit(benchmark::kMillisecond);
+
+void BM_UpsetFaultRun(benchmark::State& state) {
+  fault_runs(state, "seu-cruise", true);
+}
+BENCHMARK(BM_UpsetFaultRun)->Unit(benchmark::kMillisecond);
+
+void BM_UpsetFaultRunEmulatingAll(benchmark::State& state) {
+  fault_runs(state, "seu-cruise", false);
+}
+BENCHMARK(BM_UpsetFaultRunEmulatingAll)->Unit(benchmark::kMillisecond);
+
+void BM_UpsetFaultRunUnderEdac(benchmark::State& state) {
+  fault_runs(state, "seu-edac", true);
+}
+BENCHMARK(BM_UpsetFaultRunUnderEdac)->Unit(benchmark::kMillisecond);
 
 } // namespace
