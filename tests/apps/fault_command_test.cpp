@@ -82,10 +82,17 @@ TEST(FaultCommand, BadSpecsAreRefusedNamingTheSpecAndTheProblem) {
     const char* spec;
     const char* problem;
   } cases[] = {
-      {"melt:module1@1s", "unknown fault kind 'melt'"}, {"hang:module9@1s", "no module module9"},
-      {"hang:module1@zonez+1s", "'zonez' is no stage"}, {"hang:module1@-3s", "cannot be negative"},
-      {"hang:module1@4000s", "between 0 and 3600 s"},   {"hang:module1@1 s", "is no time"},
+      {"melt:module1@1s", "unknown fault kind 'melt'"},
+      {"hang:module9@1s", "no module module9"},
+      {"hang:module1@zonez+1s", "'zonez' is no stage"},
+      {"hang:module1@-3s", "cannot be negative"},
+      {"hang:module1@4000s", "between 0 and 3600 s"},
+      {"hang:module1@1 s", "is no time"},
       {"hang module1 1s", "KIND:MODULE@WHEN"},
+      {"seu:module1@1s,bit=9", "between 0 and 7"},
+      {"seu:module0@1s,colour=red", "takes no 'colour'"},
+      {"link:module1@1s", "MODULE.linkN"},
+      {"linkbit:module0.link0@1s,dir=both", "one wire"},
   };
   for (const auto& c : cases) {
     const auto result =
@@ -94,6 +101,39 @@ TEST(FaultCommand, BadSpecsAreRefusedNamingTheSpecAndTheProblem) {
     EXPECT_NE(result.err.find(c.spec), std::string::npos) << result.err;
     EXPECT_NE(result.err.find(c.problem), std::string::npos) << result.err;
   }
+}
+
+TEST(FaultCommand, ScrubWithoutEdacIsAUsageError) {
+  const auto result = run_marsokhod("fault --platform onboard --scrub 5 --inject seu:module0@1s");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--scrub needs --edac"), std::string::npos) << result.err;
+}
+
+TEST(FaultCommand, UpsetRecordNamesTheBitItsRegionAndBuffer) {
+  const auto result = run_marsokhod("fault --platform onboard --seed 2 --edac --inject "
+                                    "'seu:module0@1s,addr=0x80001010,bit=4' --json");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json j = nlohmann::json::parse(result.out);
+  const nlohmann::json& fault = j["faults"][0];
+  EXPECT_EQ(fault["address"], "#80001010");
+  EXPECT_EQ(fault["bit"], 4);
+  EXPECT_EQ(fault["region"], "external");
+  EXPECT_EQ(fault["edac"], "corrected");
+  EXPECT_EQ(j["outcome"], "masked");
+  EXPECT_TRUE(j["detected"].get<bool>());
+}
+
+TEST(FaultCommand, DeadLinkRecordShowsItsTroublesAndRestarts) {
+  const auto result =
+      run_marsokhod("fault --platform onboard --seed 2 --inject link:module0.link0@2s --json");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json j = nlohmann::json::parse(result.out);
+  EXPECT_EQ(j["outcome"], "recovered");
+  EXPECT_EQ(j["restarts"], 2);
+  ASSERT_EQ(j["link_troubles"].size(), 2U);
+  EXPECT_EQ(j["link_troubles"][0]["module"], "module0");
+  EXPECT_EQ(j["link_troubles"][0]["peer"], "module1");
+  EXPECT_EQ(j["failovers"][0]["failed"], "module1");
 }
 
 TEST(FaultCommand, PlatformWithoutAnOverswitchIsRefused) {
