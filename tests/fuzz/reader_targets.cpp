@@ -254,7 +254,7 @@ void read_pfm_image(const fs::path& input) {
 // ---- campaign files ----
 
 std::vector<Seed> campaign_seeds() {
-  return shipped({"campaigns/hang-power.toml"});
+  return shipped({"campaigns/hang-power.toml", "campaigns/links.toml", "campaigns/seu-edac.toml"});
 }
 
 void read_campaign(const fs::path& input) {
