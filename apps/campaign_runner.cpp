@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace marsokhod::apps {
 namespace {
@@ -221,8 +222,14 @@ nlohmann::ordered_json CampaignRunner::run(std::uint64_t run, emu::TraceSink* tr
       return record;
     }
   overswitch::FailoverSupervisor supervisor(platform_, {d.fault}, spec_->protection);
-  const occam_port::CycleEmulation emulated =
-      emulate_supervised(scene, platform_, *placement_, supervisor, trace);
+  occam_port::CycleEmulation emulated;
+  try {
+    emulated = emulate_supervised(scene, platform_, *placement_, supervisor, trace);
+  } catch (const std::exception& error) {
+    // The model's own failure, not the fault's outcome: name what reproduces it.
+    throw std::runtime_error(fmt::format("run {} (world seed {}, {}): {}", run, scene.world_seed,
+                                         overswitch::describe(d.fault), error.what()));
+  }
   const FaultVerdict verdict =
       judge_fault_run(scene.golden, emulated, supervisor, crosses_obstacle(scene, emulated));
   nlohmann::ordered_json record;

@@ -180,7 +180,7 @@ Command make_fault_command(CLI::App& parent) {
                   "With --edac: scrub each module's external memory once per this many seconds")
       ->check(real_between(0.01, 3600.0));
   app->add_flag("--link-checksums", cli->link_checksums,
-                "A checksum after each link message, a bad message sent again");
+                "A checksum after each link message; a bad one is reported and the cycle restarted");
   app->add_flag("--nav-check", cli->nav_check,
                 "The partner module checks the path's band of the disparity before driving");
   app->add_option("--trace", cli->trace, "Write a Chrome trace (Perfetto) of the faulty run here");

@@ -89,8 +89,18 @@ void FailoverSupervisor::link_trouble(const std::string& module, int link,
                     fmt::format("link{} to {}: {}", link, peer, occam_port::to_string(trouble)));
   if (control_->program_finished() || overswitch_->safe_stopped())
     return;
+  // A restart needs both ends to start again; a module that has stopped (it hung or lost its
+  // power, so its link went silent) cannot, and is failed at once rather than a timeout later.
+  emulator::Node& far = control_->node(peer);
+  if (!far.running()) {
+    overswitch_->declare_failed(far, fmt::format("it stopped: its link to {} is silent", module));
+    return;
+  }
   if (++wire_troubles_[wire_name(module, peer)] == 1) {
-    control_->kernel().schedule_after(0, emulator::event_priority::normal, [this, module] {
+    control_->kernel().schedule_after(0, emulator::event_priority::normal, [this, module, peer] {
+      // A module struck in the same instant is left to its watchdog.
+      if (!control_->node(module).running() || !control_->node(peer).running())
+        return;
       overswitch_->note(OverswitchEvent::Kind::restarted, module,
                         "on the same pair, its links reset");
       control_->restart({});

@@ -45,11 +45,24 @@ TEST(CampaignCommand, ThousandHangsAndPowerLossesAreAllDetectedAndRecovered) {
   EXPECT_EQ(summary["telemetry_lost_runs"], 0);
   EXPECT_EQ(summary["wheels_commanded_while_failed_runs"], 0);
   EXPECT_EQ(summary["unsafe_rate"], 0.0);
-  // Detection: after the last kick (at most a period, 100 ms, before the fault) the timeout,
-  // 200 ms: between 100 and 200 ms after the fault, plus the kick's few microseconds.
-  EXPECT_GE(summary["detection_latency_s"]["min"].get<double>(), 0.1);
+  // Detection by the watchdog: after the last kick (at most a period, 100 ms, before the
+  // fault) the timeout, 200 ms: between 100 and 200 ms after the fault, plus the kick's few
+  // microseconds. The partner's link timeout (100 ms from the start of an output the stopped
+  // module never takes) may come first, never later, and fails the module without a restart.
   EXPECT_LE(summary["detection_latency_s"]["max"].get<double>(), 0.200004);
-  EXPECT_EQ(lines_of(slurp(out / "runs.jsonl")).size(), 1000U);
+  const std::vector<std::string> records = lines_of(slurp(out / "runs.jsonl"));
+  ASSERT_EQ(records.size(), 1000U);
+  for (const std::string& line : records) {
+    const nlohmann::json record = nlohmann::json::parse(line);
+    const double latency = record["detection_latency_s"].get<double>();
+    // The failover's restart only (none after a fault past the cycle's end), none on the pair.
+    EXPECT_LE(record["restarts"].get<std::size_t>(), record["failovers"].size()) << line;
+    if (record.contains("link_troubles")) {
+      EXPECT_GT(latency, 0.0) << line;
+      continue;
+    }
+    EXPECT_GE(latency, 0.1) << line;
+  }
   for (const char* file : {"summary.json", "summary.md", "outcomes.png", "latency.png"})
     EXPECT_TRUE(fs::exists(out / file)) << file;
 }

@@ -61,6 +61,34 @@ TEST_F(LinkFaultTest, DeadLinkIsRestartedOnceThenItsFarModuleFailsOver) {
   EXPECT_TRUE(same_path(run, golden()));
 }
 
+// A partner that has lost its power cannot take module0's next output: the sender's timeout,
+// 100 ms after that output began, comes before the watchdog's expiry (200 ms after module1's
+// last kick, the one at the cycle's start) and the overswitch fails module1 over at once, with
+// no restart on the same pair.
+TEST_F(LinkFaultTest, PartnerLostBeforeAnOutputIsFailedOverByTheSendersTimeout) {
+  const Tick first_band = first_band_output();
+  const Tick strike = 10 * kMs;
+  ASSERT_GT(first_band, strike);
+  ASSERT_LT(first_band + kLinkTimeout, 200 * kMs);
+  FailoverSupervisor* supervisor = nullptr;
+  const CycleEmulation run =
+      emulate({fault(Fault::Kind::power_loss, "module1", strike)}, supervisor);
+  const auto& troubles = supervisor->troubles();
+  ASSERT_EQ(troubles.size(), 1U);
+  EXPECT_EQ(troubles[0].module, "module0");
+  EXPECT_EQ(troubles[0].peer, "module1");
+  EXPECT_NEAR(static_cast<double>(troubles[0].at), static_cast<double>(first_band + kLinkTimeout),
+              50.0 * kUs);
+  const auto& failovers = supervisor->overswitch().failovers();
+  ASSERT_EQ(failovers.size(), 1U);
+  EXPECT_EQ(failovers[0].failed, "module1");
+  EXPECT_EQ(failovers[0].spare, "module2");
+  EXPECT_EQ(failovers[0].detected, troubles[0].at);
+  ASSERT_TRUE(run.finished);
+  EXPECT_EQ(run.restarts, 1); // the failover's, none on the same pair
+  EXPECT_TRUE(same_path(run, golden()));
+}
+
 TEST_F(LinkFaultTest, WireDownForAMomentIsRecoveredOnTheSamePair) {
   const Tick first_band = first_band_output();
   Fault down = on_link(Fault::Kind::link_down, "module0", 0, 0, LinkDirection::both);

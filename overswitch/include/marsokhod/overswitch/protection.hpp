@@ -17,8 +17,8 @@ struct Protection {
   /// it back, one whole pass per period, so that a single error is gone before a second can
   /// join it in the same word.
   std::optional<emulator::Tick> scrub_period;
-  /// A checksum after each message on a link, checked by the receiver; a bad one is refused and
-  /// the message sent again.
+  /// A checksum after each message on a link, checked by the receiver; a bad one is reported to
+  /// the overswitch, which restarts the cycle on the pair (the retry is the whole cycle's).
   bool link_checksums = false;
   /// The navigation checks itself: the path's band of the disparity is matched again on the
   /// partner module and compared before the wheels are commanded.
