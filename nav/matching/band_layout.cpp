@@ -2,7 +2,10 @@
 
 #include "matching/band_layout.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <stdexcept>
 
 namespace marsokhod::nav::detail {
 
@@ -12,6 +15,7 @@ BandLayout::BandLayout(std::pmr::memory_resource* memory)
 void BandLayout::lay_out(int width, DisparityLimits limits, std::span<const int> wanted_low,
                          std::span<const int> wanted_high) {
   width_ = width;
+  limits_ = limits;
   const int tiles = tile_count(width);
   first_.resize(static_cast<std::size_t>(tiles));
   cells_.resize(static_cast<std::size_t>(tiles));
@@ -28,6 +32,22 @@ void BandLayout::lay_out(int width, DisparityLimits limits, std::span<const int>
     first_[t] = low;
     cells_[t] = high - low + 1;
     offset_[t + 1] = offset_[t] + static_cast<std::size_t>(pixels * cells_[t]);
+  }
+}
+
+void BandLayout::check() const {
+  const int tiles = tile_count(width_);
+  if (first_.size() != static_cast<std::size_t>(tiles) || offset_.empty() || offset_[0] != 0)
+    throw std::range_error("matching: a band's layout was struck");
+  for (std::size_t t = 0; t < first_.size(); ++t) {
+    const int pixels = std::min(kTileWidth, width_ - static_cast<int>(t) * kTileWidth);
+    // As lay_out leaves it: from the low limit to the high one or the tile's last column.
+    const int reach = std::min(limits_.high, static_cast<int>(t) * kTileWidth + pixels - 1);
+    const long long last = static_cast<long long>(first_[t]) + cells_[t] - 1;
+    const bool inside = first_[t] >= limits_.low && cells_[t] >= 1 &&
+                        last <= std::max(limits_.low, reach);
+    if (!inside || offset_[t + 1] != offset_[t] + static_cast<std::size_t>(pixels * cells_[t]))
+      throw std::range_error(fmt::format("matching: tile {} of a band's layout was struck", t));
   }
 }
 

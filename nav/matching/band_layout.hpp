@@ -39,6 +39,12 @@ public:
   void lay_out(int width, DisparityLimits limits, std::span<const int> wanted_low,
                std::span<const int> wanted_high);
 
+  /// Throws std::range_error when a tile's window has left the layer's limits, a pixel's reach
+  /// or the offsets: the layout's memory was struck since lay_out. It stands for the range
+  /// checks occam compiles into every subscript, which would stop the program at the first
+  /// index such a layout gives (a run-time error).
+  void check() const;
+
   int width() const { return width_; }
   int first(int x) const { return first_[static_cast<std::size_t>(x / kTileWidth)]; }
   int cells(int x) const { return cells_[static_cast<std::size_t>(x / kTileWidth)]; }
@@ -52,6 +58,7 @@ public:
 
 private:
   int width_ = 0;
+  DisparityLimits limits_;
   std::pmr::vector<int> first_;
   std::pmr::vector<int> cells_;
   std::pmr::vector<std::size_t> offset_;

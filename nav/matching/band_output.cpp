@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 
 namespace marsokhod::nav::detail {
 namespace {
@@ -95,6 +96,9 @@ void RightLines::load(const std::int16_t* right) {
 int check_band(const BandChoice& choice, const RightLines& right, int y0, int rows, int tolerance,
                LayerOutput& output) {
   const int width = output.disparity.width();
+  const auto [lowest, highest] = std::minmax_element(choice.disparity.begin(), choice.disparity.end());
+  if (lowest != choice.disparity.end() && (*lowest < 0 || *highest > right.max_disparity()))
+    throw std::range_error("matching: a band's chosen disparities were struck");
   const Lanes16 lane_index{0, 1, 2, 3, 4, 5, 6, 7};
   const Lanes16 live = lane_index < broadcast16(rows);
   // Disparities fit 15 bits, so a larger tolerance admits every difference.

@@ -21,6 +21,8 @@ public:
   RightLines(int width, int max_disparity, std::pmr::memory_resource* memory);
   /// From the band's right view, [r * kBandRows + lane].
   void load(const std::int16_t* right);
+  /// The largest disparity a left pixel may look back with.
+  int max_disparity() const { return pad_ - 1; }
   /// Entries -max_disparity - 1 .. width - 1 exist.
   const std::int16_t* line(int lane) const {
     return data_.data() + static_cast<std::ptrdiff_t>(lane) * stride_ + pad_;
@@ -36,7 +38,8 @@ private:
 /// The left-right check of the first `rows` lines of the band at y0 against its right view: a
 /// pixel that passes keeps its sub-pixel disparity and is valid, the others get +inf. Adds the
 /// reliable pixels to output.valid_pixels and returns the largest whole disparity among them,
-/// -1 if none.
+/// -1 if none. Throws std::range_error when a chosen disparity lies outside 0 .. the lines'
+/// max_disparity: the choice's memory was struck, and occam's range check would stop there.
 int check_band(const BandChoice& choice, const RightLines& right, int y0, int rows, int tolerance,
                LayerOutput& output);
 

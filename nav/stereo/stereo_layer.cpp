@@ -160,6 +160,8 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
     }
     band.layout.lay_out(width, input.limits, band.wanted_low, band.wanted_high);
     report(meter, Work::search_range_pixel, pixels);
+    // The layout is memory of the module: checked after each report, where an upset may fall.
+    band.layout.check();
     matching.load_band(*input.left_features, *input.right_features, y0, band.layout);
     // Grown, never shrunk, so that bands do not clear memory they then overwrite.
     if (band.costs.size() < band.layout.total() * kBandRows)
@@ -170,6 +172,7 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
     report(meter, Work::column_distance, distances * static_cast<std::uint64_t>(rows));
     report(meter, Work::match_candidate, cells);
     edge_penalties(input.left, y0, options.penalties, band.jumps);
+    band.layout.check();
     dp.run(band.layout, band.costs.data(), band.jumps.data(), options.penalties.small_step,
            band.choice);
     report(meter, Work::dp_transition, 2 * cells);
@@ -182,6 +185,7 @@ LayerOutput match_layer(const LayerInput& input, const StereoOptions& options, M
     }
     // Choosing the right view is one more minimum over the band's cells.
     const std::array<std::int16_t, kBandRows> unseen = band_unseen(input.unseen, y0, rows);
+    band.layout.check();
     report(meter, Work::disparity_choice,
            choose_right_view(band.layout, dp.aggregated(), band.right_band.data(),
                              band.right_best.data(), unseen.data()) *
