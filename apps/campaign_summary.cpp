@@ -45,7 +45,7 @@ nlohmann::ordered_json protection_json(const overswitch::Protection& p) {
                             ? nlohmann::ordered_json(emulator::to_seconds(*p.scrub_period))
                             : nlohmann::ordered_json(nullptr);
   j["link_checksums"] = p.link_checksums;
-  j["nav_check"] = p.nav_check;
+  j["terrain_check"] = p.terrain_check;
   return j;
 }
 
@@ -166,7 +166,7 @@ std::string summary_markdown(const overswitch::CampaignSpec& spec, const Campaig
                     "failed module in {}\n",
                     t.path_equals_golden, t.telemetry_lost, t.wheels_commanded_while_failed);
   if (overswitch::any(spec.protection))
-    md += fmt::format("- protection: EDAC {}{}, link checksums {}, navigation check {}; the "
+    md += fmt::format("- protection: EDAC {}{}, link checksums {}, terrain check {}; the "
                       "fault-free cycle {:.3f} s against {:.3f} s unprotected ({:+.2f} %)\n",
                       spec.protection.edac ? "on" : "off",
                       spec.protection.scrub_period
@@ -174,7 +174,7 @@ std::string summary_markdown(const overswitch::CampaignSpec& spec, const Campaig
                                         emulator::to_seconds(*spec.protection.scrub_period))
                           : "",
                       spec.protection.link_checksums ? "on" : "off",
-                      spec.protection.nav_check ? "on" : "off", facts.cycle_s,
+                      spec.protection.terrain_check ? "on" : "off", facts.cycle_s,
                       facts.unprotected_cycle_s,
                       100.0 * (facts.cycle_s / facts.unprotected_cycle_s - 1.0));
   if (spec.upset_rate) {

@@ -34,7 +34,7 @@ struct FaultCli {
   bool edac = false;
   std::optional<double> scrub_s;
   bool link_checksums = false;
-  bool nav_check = false;
+  bool terrain_check = false;
   std::optional<std::string> trace;
   bool json = false;
 };
@@ -45,7 +45,7 @@ overswitch::Protection protection_of(const FaultCli& cli) {
   if (cli.scrub_s)
     protection.scrub_period = static_cast<emu::Tick>(*cli.scrub_s * emu::kSecond);
   protection.link_checksums = cli.link_checksums;
-  protection.nav_check = cli.nav_check;
+  protection.terrain_check = cli.terrain_check;
   return protection;
 }
 
@@ -181,8 +181,9 @@ Command make_fault_command(CLI::App& parent) {
       ->check(real_between(0.01, 3600.0));
   app->add_flag("--link-checksums", cli->link_checksums,
                 "A checksum after each link message; a bad one is reported and the cycle restarted");
-  app->add_flag("--nav-check", cli->nav_check,
-                "The partner module checks the path's band of the disparity before driving");
+  app->add_flag("--terrain-check", cli->terrain_check,
+                "Word sums of the kept terrain's rows, checked each time zones and path rebuild "
+                "one; a struck row halts its module");
   app->add_option("--trace", cli->trace, "Write a Chrome trace (Perfetto) of the faulty run here");
   app->add_flag("--json", cli->json, "Print a machine-readable verdict on stdout");
   return {app, [cli] {

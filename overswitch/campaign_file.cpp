@@ -184,7 +184,7 @@ void read_protection(io::TomlTable& protection, CampaignSpec& spec) {
     p.scrub_period = static_cast<emulator::Tick>(*scrub * static_cast<double>(emulator::kSecond));
   }
   p.link_checksums = protection.boolean("link_checksums", false);
-  p.nav_check = protection.boolean("nav_check", false);
+  p.terrain_check = protection.boolean("terrain_check", false);
   reject_unknown_keys(protection, "[protection]");
 }
 

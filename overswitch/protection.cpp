@@ -7,7 +7,7 @@
 namespace marsokhod::overswitch {
 
 bool any(const Protection& protection) {
-  return protection.edac || protection.link_checksums || protection.nav_check;
+  return protection.edac || protection.link_checksums || protection.terrain_check;
 }
 
 emulator::PlatformSpec protected_platform(const emulator::PlatformSpec& platform,

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 namespace marsokhod::nav::detail {
@@ -39,6 +40,10 @@ struct Columns {
         if (judged[x] == kUnknown)
           continue;
         const std::size_t at = next[static_cast<std::size_t>(x - first)]++;
+        // Reading a row may let time pass, and an upset strike the column ends (occam's
+        // range check on the subscript).
+        if (at < start(x) || at >= start(x) + static_cast<std::size_t>(height))
+          throw std::range_error("zones: a column's end in the ordering check was struck");
         row_of[at] = y;
         range_of[at] = range[x];
       }
@@ -154,8 +159,11 @@ void mark_contradictions(const LongestChain& chain, std::span<const float> range
     const double r = ranges[i];
     const bool too_far = next < n && r > ranges[next] * (1.0 + tolerance) + kOrderSlack_m;
     const bool too_near = below >= 0.0 && r < below * (1.0 - tolerance) - kOrderSlack_m;
-    if (too_far || too_near)
-      zone(x, rows[i]) = kUnknown;
+    if (!too_far && !too_near)
+      continue;
+    if (rows[i] < 0 || rows[i] >= zone.height())
+      throw std::range_error("zones: a pixel's row in the ordering check was struck");
+    zone(x, rows[i]) = kUnknown;
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include "marsokhod/occam_port/navigation/block_channel.hpp"
 
+#include "navigation/word_sum.hpp"
+
 #include "marsokhod/emulator/links/link.hpp"
 #include "marsokhod/emulator/node/node.hpp"
 
@@ -31,30 +33,6 @@ void copy_block(void* destination, const void* source) {
                                        from->size, to->size));
   if (from->size > 0)
     std::memcpy(to->data, from->source, from->size);
-}
-
-/// The program's checksum of a message: the 32-bit sum of its words, the last one padded with
-/// zero bytes; any single bit inverted on the wire changes it.
-std::uint32_t word_sum(std::span<const std::byte> bytes) {
-  std::uint32_t sum = 0;
-  for (std::size_t i = 0; i < bytes.size(); i += 4) {
-    std::uint32_t word = 0;
-    std::memcpy(&word, bytes.data() + i, std::min<std::size_t>(4, bytes.size() - i));
-    sum += word;
-  }
-  return sum;
-}
-
-/// The sum's cost: occam's `sum := sum PLUS msg[i]` over the message's words compiles to ldnl,
-/// sum and lend per word, the word read from external memory.
-void charge_sum(emulator::Node& node, std::size_t bytes) {
-  const std::uint64_t words = (bytes + 3) / 4;
-  emulator::InstructionMix mix;
-  mix.add(emulator::Instruction::ldnl, words)
-      .add(emulator::Instruction::sum, words)
-      .add(emulator::Instruction::lend_loop, words);
-  mix.external_accesses = words;
-  node.compute(mix);
 }
 
 /// The timer half of OutputOrFail.t: at the deadline, resetch on the output's link; gone with
@@ -109,8 +87,8 @@ void BlockChannel::send(std::span<const std::byte> block) {
   output_guarded(block);
   if (!guard_.checksums)
     return;
-  charge_sum(node, block.size());
-  const std::uint32_t sum = word_sum(block);
+  detail::charge_word_sum(node, block.size());
+  const std::uint32_t sum = detail::word_sum(block);
   std::array<std::byte, 4> bytes{};
   std::memcpy(bytes.data(), &sum, bytes.size());
   node.execute(emulator::Instruction::out);
@@ -150,10 +128,10 @@ void BlockChannel::receive(std::span<std::byte> block) {
   std::array<std::byte, 4> bytes{};
   node.execute(emulator::Instruction::in);
   receiver_->input(bytes);
-  charge_sum(node, block.size());
+  detail::charge_word_sum(node, block.size());
   std::uint32_t sum = 0;
   std::memcpy(&sum, bytes.data(), bytes.size());
-  if (sum != word_sum(block))
+  if (sum != detail::word_sum(block))
     stop_on(*receiver_, LinkTrouble::checksum);
 }
 

@@ -157,6 +157,8 @@ TEST(CampaignCommand, BadCampaignFilesNameFileLineAndKey) {
        "scrub_period_s", "set edac"},
       {"bad-protection-key", head + fault + "[protection]\nparity = true\n", 9, "parity",
        "is not a key of [protection]"},
+      {"terrain-check-not-a-boolean", head + fault + "[protection]\nterrain_check = \"yes\"\n", 9,
+       "terrain_check", "boolean"},
       {"bad-preset",
        head + "[[fault]]\nkind = \"seu\"\nover = \"memory\"\n[upsets]\npreset = \"venus\"\n", 10,
        "preset", "no preset (cruise, mars-surface, leo)"},

@@ -55,6 +55,7 @@ public:
   void attach(occam_port::CycleControl& control) override;
   /// The platform's link timeout, and checksums when the protection has them.
   occam_port::LinkGuard link_guard() const override;
+  bool check_terrain() const override { return protection_.terrain_check; }
   void stage_started(const std::string& process, emulator::Tick at) override;
   /// Winds the heartbeats and watchdogs down: at once, or, when a fault has struck that no
   /// watchdog has seen yet, after long enough for one to (a period for the last kick, the

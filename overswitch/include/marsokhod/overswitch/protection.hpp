@@ -20,9 +20,11 @@ struct Protection {
   /// A checksum after each message on a link, checked by the receiver; a bad one is reported to
   /// the overswitch, which restarts the cycle on the pair (the retry is the whole cycle's).
   bool link_checksums = false;
-  /// The navigation checks itself: the path's band of the disparity is matched again on the
-  /// partner module and compared before the wheels are commanded.
-  bool nav_check = false;
+  /// A check of the navigation's own: range sends a word sum of each row of the terrain with
+  /// it, and zones and path check a row's sum each time they rebuild it; one that no longer
+  /// checks stops the program with a run-time error (the module halts and fails over), so a
+  /// terrain struck while kept is never planned on.
+  bool terrain_check = false;
 };
 
 /// Something is switched on.

@@ -65,6 +65,10 @@ public:
   virtual void attach(CycleControl& control) = 0;
   /// How the program guards its messages on links (asked once, before the program starts).
   virtual LinkGuard link_guard() const { return {}; }
+  /// Whether the program checks the terrain it keeps after range: range sends a word sum of
+  /// each row with it, and a process rebuilding a row whose sum no longer checks stops with a
+  /// run-time error (asked as the program starts).
+  virtual bool check_terrain() const { return false; }
   /// A process of the program had its input and starts its stage (after a restart, again).
   virtual void stage_started(const std::string& /*process*/, emulator::Tick /*at*/) {}
   /// The program's last process has ended. The run goes on while anything is left to happen
