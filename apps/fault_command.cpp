@@ -179,8 +179,9 @@ Command make_fault_command(CLI::App& parent) {
   app->add_option("--scrub", cli->scrub_s,
                   "With --edac: scrub each module's external memory once per this many seconds")
       ->check(real_between(0.01, 3600.0));
-  app->add_flag("--link-checksums", cli->link_checksums,
-                "A checksum after each link message; a bad one is reported and the cycle restarted");
+  app->add_flag(
+      "--link-checksums", cli->link_checksums,
+      "A checksum after each link message; a bad one is reported and the cycle restarted");
   app->add_flag("--terrain-check", cli->terrain_check,
                 "Word sums of the kept terrain's rows, checked each time zones and path rebuild "
                 "one; a struck row halts its module");

@@ -58,7 +58,8 @@ nav::NavigationOptions options() {
 
 occam_port::CycleEmulation emulate(const Machine& m) {
   const Site& s = site();
-  const occam_port::CycleInput input{s.frame.images.left, s.frame.images.right, &s.rig, options(), {}};
+  const occam_port::CycleInput input{
+      s.frame.images.left, s.frame.images.right, &s.rig, options(), {}};
   occam_port::CycleEmulation run = occam_port::emulate_navigation_cycle(
       input, occam_port::CycleSetup{&m.platform, &m.placement, m.external_bytes, nullptr,
                                     occam_port::kOccamStyleFactor, nullptr, std::nullopt});

@@ -50,8 +50,8 @@ void fault_runs(benchmark::State& state, const std::string& name, bool skip) {
   std::uint64_t k = 0;
   for (auto _ : state)
     benchmark::DoNotOptimize(r.run(k++, nullptr, skip));
-  state.counters["runs_per_minute"] =
-      benchmark::Counter(static_cast<double>(state.iterations()) * 60.0, benchmark::Counter::kIsRate);
+  state.counters["runs_per_minute"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * 60.0, benchmark::Counter::kIsRate);
 }
 
 void BM_HangPowerFaultRun(benchmark::State& state) {

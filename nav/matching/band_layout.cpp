@@ -44,8 +44,8 @@ void BandLayout::check() const {
     // As lay_out leaves it: from the low limit to the high one or the tile's last column.
     const int reach = std::min(limits_.high, static_cast<int>(t) * kTileWidth + pixels - 1);
     const long long last = static_cast<long long>(first_[t]) + cells_[t] - 1;
-    const bool inside = first_[t] >= limits_.low && cells_[t] >= 1 &&
-                        last <= std::max(limits_.low, reach);
+    const bool inside =
+        first_[t] >= limits_.low && cells_[t] >= 1 && last <= std::max(limits_.low, reach);
     if (!inside || offset_[t + 1] != offset_[t] + static_cast<std::size_t>(pixels * cells_[t]))
       throw std::range_error(fmt::format("matching: tile {} of a band's layout was struck", t));
   }

@@ -96,7 +96,8 @@ void RightLines::load(const std::int16_t* right) {
 int check_band(const BandChoice& choice, const RightLines& right, int y0, int rows, int tolerance,
                LayerOutput& output) {
   const int width = output.disparity.width();
-  const auto [lowest, highest] = std::minmax_element(choice.disparity.begin(), choice.disparity.end());
+  const auto [lowest, highest] =
+      std::minmax_element(choice.disparity.begin(), choice.disparity.end());
   if (lowest != choice.disparity.end() && (*lowest < 0 || *highest > right.max_disparity()))
     throw std::range_error("matching: a band's chosen disparities were struck");
   const Lanes16 lane_index{0, 1, 2, 3, 4, 5, 6, 7};

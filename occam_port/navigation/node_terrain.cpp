@@ -91,8 +91,8 @@ NodeTerrain::NodeTerrain(ProcessContext& c, BlockChannel& channel)
     known_pixels_ = receive_value<std::uint64_t>(channel);
   }
   if (terrain_checked(s)) {
-    c.doing(fmt::format("terrain row sums, {} rows x {} planes x 4 B", s.height,
-                        resident_ ? 4 : 1));
+    c.doing(
+        fmt::format("terrain row sums, {} rows x {} planes x 4 B", s.height, resident_ ? 4 : 1));
     sums_ = receive_list<std::uint32_t>(channel, c.memory());
   }
   if (!resident_) {
@@ -140,8 +140,8 @@ void make_and_send_terrain(ProcessContext& c, const FloatImage& seeable, BlockCh
     std::pmr::vector<std::uint32_t> sums(c.memory());
     if (terrain_checked(s)) {
       c.doing(fmt::format("terrain row sums, {} rows x 4 planes x 4 B", s.height));
-      const std::array<imaging::ImageView<const float>, 4> planes{
-          terrain.forward, terrain.left, terrain.elevation, terrain.range};
+      const std::array<imaging::ImageView<const float>, 4> planes{terrain.forward, terrain.left,
+                                                                  terrain.elevation, terrain.range};
       sums = row_sums(planes, c.node(), c.memory());
     }
     send_maps(channel, terrain);
