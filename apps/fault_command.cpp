@@ -178,7 +178,7 @@ Command make_fault_command(CLI::App& parent) {
                 "SEC-DED EDAC on the modules' external memory (adds its wait states)");
   app->add_option("--scrub", cli->scrub_s,
                   "With --edac: scrub each module's external memory once per this many seconds")
-      ->check(real_between(0.01, 3600.0));
+      ->check(real_between(0.01, 86400.0));
   app->add_flag(
       "--link-checksums", cli->link_checksums,
       "A checksum after each link message; a bad one is reported and the cycle restarted");

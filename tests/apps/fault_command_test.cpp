@@ -109,6 +109,20 @@ TEST(FaultCommand, ScrubWithoutEdacIsAUsageError) {
   EXPECT_NE(result.err.find("--scrub needs --edac"), std::string::npos) << result.err;
 }
 
+// An upset in zones' copy of the terrain just after zones took it: zones reads every row after
+// it, so the checked terrain halts module1 and the spare's cycle gives the fault-free path.
+TEST(FaultCommand, TerrainCheckHaltsTheModuleWhoseKeptTerrainWasStruck) {
+  const auto result = run_marsokhod("fault --platform onboard --seed 2 --terrain-check --inject "
+                                    "'seu:module1@zones+1us,buffer=seeable disparity' --json");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json j = nlohmann::json::parse(result.out);
+  EXPECT_EQ(j["outcome"], "recovered");
+  ASSERT_EQ(j["halts"].size(), 1U);
+  EXPECT_EQ(j["halts"][0]["module"], "module1");
+  EXPECT_NE(j["halts"][0]["cause"].get<std::string>().find("no longer checks"), std::string::npos);
+  EXPECT_TRUE(j["path_equals_golden"].get<bool>());
+}
+
 TEST(FaultCommand, UpsetRecordNamesTheBitItsRegionAndBuffer) {
   const auto result = run_marsokhod("fault --platform onboard --seed 2 --edac --inject "
                                     "'seu:module0@1s,addr=0x80001010,bit=4' --json");
