@@ -71,7 +71,7 @@ CampaignTally tally(const std::vector<nlohmann::json>& records);
 /// detected_fraction and the rest.
 /// The unsafe outcomes a year of operations would see at the campaign's upset rate: each run
 /// holds one upset, drawn over every bit the rate strikes, so the unsafe share of the runs is
-/// the chance that one upset makes its cycle unsafe, and the year brings rate x bits x 365 of
+/// the chance that one upset makes its cycle unsafe, and the year brings rate x bits x 365.25 of
 /// them (while upsets are rare enough that a cycle sees at most one).
 struct UpsetExposure {
   double upsets_per_day = 0.0;
