@@ -1,5 +1,5 @@
-// Campaign files: the platform, scenarios, fault mix and stopping rule of a fault-injection
-// campaign (docs/faults.md, "Campaign files").
+// Campaign files: the platform, scenarios, fault mix, protection, upset rate and stopping rule
+// of a fault-injection campaign (docs/faults.md, "Campaign file").
 #pragma once
 
 #include "marsokhod/io/formats/keyed_file_error.hpp"
