@@ -19,10 +19,21 @@ std::span<const std::byte> row_bytes(imaging::ImageView<const float> plane, int 
   return std::as_bytes(std::span(plane.row(y), static_cast<std::size_t>(plane.width())));
 }
 
+/// The four maps, in the order they go on a channel and their rows are summed.
+std::vector<imaging::ImageView<const float>> map_planes(const nav::TerrainPoints& terrain) {
+  return {terrain.forward, terrain.left, terrain.elevation, terrain.range};
+}
+
+/// What the row sums of `planes` planes of `height` rows hold, for the memory's block names.
+std::string sums_what(int height, std::size_t planes) {
+  if (planes == 1)
+    return fmt::format("terrain row sums, {} rows x 4 B", height);
+  return fmt::format("terrain row sums, {} rows x {} planes x 4 B", height, planes);
+}
+
 void send_maps(BlockChannel& channel, const nav::TerrainPoints& terrain) {
-  for (const FloatImage* plane :
-       {&terrain.forward, &terrain.left, &terrain.elevation, &terrain.range})
-    send_image<float>(channel, plane->view());
+  for (const imaging::ImageView<const float>& plane : map_planes(terrain))
+    send_image<float>(channel, plane);
   send_value(channel, terrain.known_pixels);
 }
 
@@ -91,8 +102,7 @@ NodeTerrain::NodeTerrain(ProcessContext& c, BlockChannel& channel)
     known_pixels_ = receive_value<std::uint64_t>(channel);
   }
   if (terrain_checked(s)) {
-    c.doing(
-        fmt::format("terrain row sums, {} rows x {} planes x 4 B", s.height, resident_ ? 4 : 1));
+    c.doing(sums_what(s.height, planes().size()));
     sums_ = receive_list<std::uint32_t>(channel, c.memory());
   }
   if (!resident_) {
@@ -107,7 +117,7 @@ NodeTerrain::NodeTerrain(ProcessContext& c, BlockChannel& channel)
 
 std::vector<imaging::ImageView<const float>> NodeTerrain::planes() const {
   if (resident_)
-    return {maps_.forward, maps_.left, maps_.elevation, maps_.range};
+    return map_planes(maps_);
   return {seeable_};
 }
 
@@ -129,7 +139,27 @@ void NodeTerrain::send(BlockChannel& channel) const {
     send_list<std::uint32_t>(channel, sums_);
 }
 
-// With the check, the sums are made before the terrain goes, of what range made.
+namespace {
+
+/// With the check, range's sums of the planes it is about to send, made before they go, of what
+/// range made; nothing without it.
+std::pmr::vector<std::uint32_t>
+sums_to_send(ProcessContext& c, const std::vector<imaging::ImageView<const float>>& planes) {
+  std::pmr::vector<std::uint32_t> sums(c.memory());
+  if (!terrain_checked(c.cycle()))
+    return sums;
+  c.doing(sums_what(c.cycle().height, planes.size()));
+  return row_sums(planes, c.node(), c.memory());
+}
+
+void send_sums(ProcessContext& c, BlockChannel& channel,
+               const std::pmr::vector<std::uint32_t>& sums) {
+  if (terrain_checked(c.cycle()))
+    send_list<std::uint32_t>(channel, sums);
+}
+
+} // namespace
+
 void make_and_send_terrain(ProcessContext& c, const FloatImage& seeable, BlockChannel& channel) {
   CycleState& s = c.cycle();
   if (s.plan->terrain_kept) {
@@ -137,16 +167,9 @@ void make_and_send_terrain(ProcessContext& c, const FloatImage& seeable, BlockCh
     const nav::TerrainPoints terrain =
         nav::reconstruct_terrain(seeable, *s.rig, s.options.attitude, c.meter(), c.memory());
     s.products.terrain = terrain;
-    std::pmr::vector<std::uint32_t> sums(c.memory());
-    if (terrain_checked(s)) {
-      c.doing(fmt::format("terrain row sums, {} rows x 4 planes x 4 B", s.height));
-      const std::array<imaging::ImageView<const float>, 4> planes{terrain.forward, terrain.left,
-                                                                  terrain.elevation, terrain.range};
-      sums = row_sums(planes, c.node(), c.memory());
-    }
+    const std::pmr::vector<std::uint32_t> sums = sums_to_send(c, map_planes(terrain));
     send_maps(channel, terrain);
-    if (terrain_checked(s))
-      send_list<std::uint32_t>(channel, sums);
+    send_sums(c, channel, sums);
     return;
   }
   c.doing(image_what("terrain row (forward, left, elevation, range)", s.width, 1, 16));
@@ -154,15 +177,9 @@ void make_and_send_terrain(ProcessContext& c, const FloatImage& seeable, BlockCh
       nav::count_terrain_points(seeable, *s.rig, s.options.attitude, c.meter(), c.memory());
   // The maps no node keeps, worked out on the host for the files (as read out of a node).
   s.products.terrain = nav::reconstruct_terrain(seeable, *s.rig, s.options.attitude);
-  std::pmr::vector<std::uint32_t> sums(c.memory());
-  if (terrain_checked(s)) {
-    c.doing(fmt::format("terrain row sums, {} rows x 4 B", s.height));
-    const std::array<imaging::ImageView<const float>, 1> planes{seeable};
-    sums = row_sums(planes, c.node(), c.memory());
-  }
+  const std::pmr::vector<std::uint32_t> sums = sums_to_send(c, {seeable});
   send_disparity(channel, seeable, known);
-  if (terrain_checked(s))
-    send_list<std::uint32_t>(channel, sums);
+  send_sums(c, channel, sums);
 }
 
 } // namespace marsokhod::occam_port::detail
