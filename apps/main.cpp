@@ -1,6 +1,6 @@
 // The marsokhod executable's entry point.
 
-#include "command.hpp"
+#include "cli/command.hpp"
 
 #include <fmt/format.h>
 

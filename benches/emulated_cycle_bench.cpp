@@ -7,7 +7,7 @@
 // PC card runs as shipped.
 #include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
-#include "marsokhod/occam_port/navigation/navigation_program.hpp"
+#include "marsokhod/nav_program/run/navigation_program.hpp"
 #include "marsokhod/world/scene/rendered_site.hpp"
 
 #include <benchmark/benchmark.h>
@@ -37,7 +37,7 @@ const Site& site() {
 
 struct Machine {
   emulator::PlatformSpec platform;
-  occam_port::Placement placement;
+  nav_program::Placement placement;
   std::optional<std::size_t> external_bytes;
 };
 
@@ -45,8 +45,8 @@ Machine machine(const std::string& name, std::optional<std::size_t> external_byt
   const emulator::PlatformSpec platform =
       emulator::load_platform(emulator::find_platform_file(name + ".toml"));
   return {platform,
-          occam_port::load_placement(occam_port::default_placement_file(platform), platform,
-                                     occam_port::navigation_program_shape()),
+          nav_program::load_placement(nav_program::default_placement_file(platform), platform,
+                                      nav_program::navigation_program_shape()),
           external_bytes};
 }
 
@@ -56,13 +56,13 @@ nav::NavigationOptions options() {
   return made;
 }
 
-occam_port::CycleEmulation emulate(const Machine& m) {
+nav_program::CycleEmulation emulate(const Machine& m) {
   const Site& s = site();
-  const occam_port::CycleInput input{
+  const nav_program::CycleInput input{
       s.frame.images.left, s.frame.images.right, &s.rig, options(), {}};
-  occam_port::CycleEmulation run = occam_port::emulate_navigation_cycle(
-      input, occam_port::CycleSetup{&m.platform, &m.placement, m.external_bytes, nullptr,
-                                    occam_port::kOccamStyleFactor, nullptr, std::nullopt});
+  nav_program::CycleEmulation run = nav_program::emulate_navigation_cycle(
+      input, nav_program::CycleSetup{&m.platform, &m.placement, m.external_bytes, nullptr,
+                                     nav_program::kOccamStyleFactor, nullptr, std::nullopt});
   if (run.memory_fault)
     throw std::runtime_error("the benchmark cycle ran out of memory on " + run.memory_fault->node);
   return run;
@@ -82,7 +82,7 @@ BENCHMARK(BM_NativeChain128)->Unit(benchmark::kMillisecond);
 void emulated_cycle(benchmark::State& state, const Machine& m) {
   double emulated_seconds = 0.0;
   for (auto _ : state) {
-    const occam_port::CycleEmulation run = emulate(m);
+    const nav_program::CycleEmulation run = emulate(m);
     emulated_seconds = emulator::to_seconds(run.emulated);
     benchmark::DoNotOptimize(run.emulated);
   }
@@ -118,7 +118,7 @@ void BM_EmulatedOverNativeRatio128(benchmark::State& state) {
         nav::navigate(s.frame.images.left, s.frame.images.right, s.rig, o);
     benchmark::DoNotOptimize(result.plan.pixels.data());
     const auto t1 = Clock::now();
-    const occam_port::CycleEmulation run = emulate(m);
+    const nav_program::CycleEmulation run = emulate(m);
     benchmark::DoNotOptimize(run.emulated);
     emulated += Clock::now() - t1;
     native += t1 - t0;

@@ -5,11 +5,10 @@
 // Runs per minute per core are 60 s over the time; `campaign --jobs 2` prints what two workers
 // reach. Target: at least 1,000 runs per minute with two jobs, so at least 500 per core.
 
-#include "campaign_runner.hpp"
-
 #include "marsokhod/emulator/platform/platform.hpp"
-#include "marsokhod/occam_port/navigation/navigation_program.hpp"
-#include "marsokhod/overswitch/campaign_file.hpp"
+#include "marsokhod/eval/campaign/campaign_runner.hpp"
+#include "marsokhod/nav_program/run/navigation_program.hpp"
+#include "marsokhod/overswitch/campaign/campaign_file.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -25,8 +24,8 @@ using namespace marsokhod;
 struct Campaign {
   overswitch::CampaignSpec spec;
   emulator::PlatformSpec platform;
-  occam_port::Placement placement;
-  std::unique_ptr<apps::CampaignRunner> runner;
+  nav_program::Placement placement;
+  std::unique_ptr<eval::CampaignRunner> runner;
 };
 
 /// The campaign file `name` and its runner, made once.
@@ -39,14 +38,13 @@ const Campaign& campaign(const std::string& name) {
   c->spec = overswitch::load_campaign(std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "campaigns" /
                                       (name + ".toml"));
   c->platform = emulator::load_platform(emulator::find_platform_file("onboard.toml"));
-  c->placement = occam_port::load_placement(occam_port::default_placement_file(c->platform),
-                                            c->platform, occam_port::navigation_program_shape());
-  c->runner = std::make_unique<apps::CampaignRunner>(c->spec, c->platform, c->placement, nullptr);
+  c->placement = nav_program::load_program_placement(c->platform);
+  c->runner = std::make_unique<eval::CampaignRunner>(c->spec, c->platform, c->placement, nullptr);
   return *c;
 }
 
 void fault_runs(benchmark::State& state, const std::string& name, bool skip) {
-  const apps::CampaignRunner& r = *campaign(name).runner;
+  const eval::CampaignRunner& r = *campaign(name).runner;
   std::uint64_t k = 0;
   for (auto _ : state)
     benchmark::DoNotOptimize(r.run(k++, nullptr, skip));

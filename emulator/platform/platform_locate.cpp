@@ -1,4 +1,4 @@
-// Finding a platform file by name in the folders it may be shipped in.
+// Finding a platform file by name in the folders it may be shipped in, or by its path.
 
 #include "marsokhod/emulator/platform/platform.hpp"
 
@@ -46,6 +46,12 @@ std::filesystem::path find_platform_file(const std::string& name) {
                       fmt::format("no such platform file in {} (set MARSOKHOD_PLATFORMS or pass "
                                   "the file's path)",
                                   fmt::join(tried, ", ")));
+}
+
+PlatformSpec load_named_platform(const std::string& name) {
+  if (std::filesystem::exists(name) || name.find('/') != std::string::npos)
+    return load_platform(name);
+  return load_platform(find_platform_file(name.ends_with(".toml") ? name : name + ".toml"));
 }
 
 } // namespace marsokhod::emulator

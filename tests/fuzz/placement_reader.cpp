@@ -2,8 +2,8 @@
 #include "fuzz/placement_reader.hpp"
 
 #include "marsokhod/emulator/platform/platform.hpp"
-#include "marsokhod/occam_port/navigation/navigation_program.hpp"
-#include "marsokhod/occam_port/navigation/placement.hpp"
+#include "marsokhod/nav_program/placement/placement.hpp"
+#include "marsokhod/nav_program/run/navigation_program.hpp"
 
 #include <fmt/format.h>
 
@@ -26,8 +26,9 @@ const emulator::PlatformSpec& shipped_platform(const char* file) {
   return std::string_view(file) == "onboard" ? onboard : pc_card;
 }
 
-void check_placement(const occam_port::Placement& placement, const emulator::PlatformSpec& platform,
-                     const occam_port::ProgramShape& shape) {
+void check_placement(const nav_program::Placement& placement,
+                     const emulator::PlatformSpec& platform,
+                     const nav_program::ProgramShape& shape) {
   expect(placement.platform == platform.name,
          fmt::format("placement for '{}' accepted on '{}'", placement.platform, platform.name));
   expect(
@@ -36,13 +37,13 @@ void check_placement(const occam_port::Placement& placement, const emulator::Pla
   for (const std::string& process : shape.processes) {
     const auto count = std::count_if(
         placement.places.begin(), placement.places.end(),
-        [&](const occam_port::ProcessPlace& place) { return place.process == process; });
+        [&](const nav_program::ProcessPlace& place) { return place.process == process; });
     expect(count == 1, fmt::format("process '{}' placed {} times", process, count));
     const emulator::NodeSpec* node = platform.find_node(placement.node_of(process));
     expect(node != nullptr && node->powered, fmt::format("process '{}' on '{}', no powered node",
                                                          process, placement.node_of(process)));
   }
-  for (const occam_port::ProcessPlace& place : placement.places)
+  for (const nav_program::ProcessPlace& place : placement.places)
     expect(place.line > 0, fmt::format("process '{}' without a line", place.process));
 }
 
@@ -53,18 +54,18 @@ std::vector<Seed> placement_seeds() {
 }
 
 void read_placement(const fs::path& input) {
-  const occam_port::ProgramShape shape = occam_port::navigation_program_shape();
+  const nav_program::ProgramShape shape = nav_program::navigation_program_shape();
   // The shipped platform the file is for: onboard, or pc-card when the file says it is not
   // for onboard. A mutant naming neither is refused against pc-card.
   const emulator::PlatformSpec* platform = &shipped_platform("onboard");
-  occam_port::Placement placement;
+  nav_program::Placement placement;
   try {
-    placement = occam_port::load_placement(input, *platform, shape);
-  } catch (const occam_port::PlacementError& error) {
+    placement = nav_program::load_placement(input, *platform, shape);
+  } catch (const nav_program::PlacementError& error) {
     if (error.key() != "placement.platform")
       throw;
     platform = &shipped_platform("pc-card");
-    placement = occam_port::load_placement(input, *platform, shape);
+    placement = nav_program::load_placement(input, *platform, shape);
   }
   check_placement(placement, *platform, shape);
 }

@@ -8,7 +8,7 @@
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
-#include "marsokhod/overswitch/campaign_file.hpp"
+#include "marsokhod/overswitch/campaign/campaign_file.hpp"
 #include "marsokhod/world/scene/scene.hpp"
 #include "marsokhod/world/scene/scene_file.hpp"
 

@@ -8,7 +8,7 @@ add_library(marsokhod_reader_registry STATIC "${reader_fuzz_dir}/mutation_engine
                                              "${reader_fuzz_dir}/reader_targets.cpp"
                                              "${reader_fuzz_dir}/reader_verdict.cpp")
 target_include_directories(marsokhod_reader_registry PUBLIC "${CMAKE_SOURCE_DIR}/tests")
-target_link_libraries(marsokhod_reader_registry PUBLIC marsokhod_overswitch marsokhod_occam_port marsokhod_emulator
+target_link_libraries(marsokhod_reader_registry PUBLIC marsokhod_overswitch marsokhod_nav_program marsokhod_occam_port marsokhod_emulator
                       marsokhod_eval marsokhod_nav marsokhod_world marsokhod_imaging marsokhod_io
                       fmt::fmt tomlplusplus::tomlplusplus nlohmann_json::nlohmann_json)
 target_compile_definitions(

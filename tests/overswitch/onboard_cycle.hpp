@@ -3,9 +3,9 @@
 #pragma once
 
 #include "marsokhod/emulator/platform/platform.hpp"
-#include "marsokhod/occam_port/navigation/memory_plan.hpp"
-#include "marsokhod/occam_port/navigation/navigation_program.hpp"
-#include "marsokhod/overswitch/failover_supervisor.hpp"
+#include "marsokhod/nav_program/placement/memory_plan.hpp"
+#include "marsokhod/nav_program/run/navigation_program.hpp"
+#include "marsokhod/overswitch/supervision/failover_supervisor.hpp"
 #include "marsokhod/world/scene/rendered_site.hpp"
 
 #include <gtest/gtest.h>
@@ -19,7 +19,7 @@ namespace marsokhod::overswitch {
 namespace test {
 
 using emulator::Tick;
-using occam_port::CycleEmulation;
+using nav_program::CycleEmulation;
 
 inline const std::filesystem::path kPlatforms =
     std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
@@ -50,8 +50,9 @@ class OnboardCycle : public ::testing::Test {
 protected:
   OnboardCycle()
       : platform_(emulator::load_platform(kPlatforms / "onboard.toml")),
-        placement_(occam_port::load_placement(occam_port::default_placement_file(platform_),
-                                              platform_, occam_port::navigation_program_shape())) {}
+        placement_(nav_program::load_placement(nav_program::default_placement_file(platform_),
+                                               platform_,
+                                               nav_program::navigation_program_shape())) {}
 
   /// The cycle with `faults` and `protection` (on the platform with its costs).
   CycleEmulation emulate(std::vector<Fault> faults, FailoverSupervisor*& out,
@@ -62,18 +63,18 @@ protected:
     const Site& s = site();
     nav::NavigationOptions options;
     options.attitude = s.scene.placement.attitude;
-    const occam_port::CycleInput input{s.frame.images.left, s.frame.images.right, &s.rig, options,
-                                       mission_};
-    return occam_port::emulate_navigation_cycle(
-        input, occam_port::CycleSetup{&protected_, &placement_, std::nullopt, nullptr,
-                                      occam_port::kOccamStyleFactor, supervisor_.get(),
-                                      120 * emulator::kSecond});
+    const nav_program::CycleInput input{s.frame.images.left, s.frame.images.right, &s.rig, options,
+                                        mission_};
+    return nav_program::emulate_navigation_cycle(
+        input, nav_program::CycleSetup{&protected_, &placement_, std::nullopt, nullptr,
+                                       nav_program::kOccamStyleFactor, supervisor_.get(),
+                                       120 * emulator::kSecond});
   }
 
   /// The fault-free cycle, unprotected, from the mission's start (whatever mission_ says).
   const CycleEmulation& golden() {
     static const CycleEmulation golden = [this] {
-      const occam_port::MissionState kept = mission_;
+      const nav_program::MissionState kept = mission_;
       mission_ = {};
       FailoverSupervisor* unused = nullptr;
       CycleEmulation run = emulate({}, unused);
@@ -87,9 +88,9 @@ protected:
   /// code bytes and the mission state record (eight INT32 and REAL32 words), one length byte per
   /// block of at most 255.
   Tick boot_time_of(const std::string& node) const {
-    const occam_port::MemoryPlan plan =
-        occam_port::plan_memory(platform_, placement_, 128, 128, 4, std::nullopt);
-    for (const occam_port::NodePlan& node_plan : plan.nodes)
+    const nav_program::MemoryPlan plan =
+        nav_program::plan_memory(platform_, placement_, 128, 128, 4, std::nullopt);
+    for (const nav_program::NodePlan& node_plan : plan.nodes)
       if (node_plan.node == node) {
         const std::size_t bytes = node_plan.code_bytes + 8 * 4;
         const std::size_t stream = bytes + (bytes + 254) / 255;
@@ -107,8 +108,8 @@ protected:
   emulator::PlatformSpec platform_;
   emulator::PlatformSpec protected_;
   /// The mission state the cycles start from.
-  occam_port::MissionState mission_;
-  occam_port::Placement placement_;
+  nav_program::MissionState mission_;
+  nav_program::Placement placement_;
   std::unique_ptr<FailoverSupervisor> supervisor_;
 };
 

@@ -145,4 +145,8 @@ PlatformSpec load_platform(const std::filesystem::path& file);
 /// build tree inside the source tree). Throws PlatformError listing the places it looked.
 std::filesystem::path find_platform_file(const std::string& name);
 
+/// A platform a user names: the file `name` when one exists there or `name` has a '/', else the
+/// shipped platform of that name ("onboard", "pc-card.toml"). Throws PlatformError.
+PlatformSpec load_named_platform(const std::string& name);
+
 } // namespace marsokhod::emulator
