@@ -27,8 +27,9 @@ test: build
 bench: build
 	@sh scripts/run-benches.sh $(BUILD_DIR) $(OUT)/bench
 
-# AddressSanitizer + UBSan build (build/sanitize) of the emulator, occam and image-reader
-# layers and their tests; `make sanitize SANITIZE_SCOPE=all` runs the whole suite.
+# AddressSanitizer + UBSan build (build/sanitize) of the io, imaging, emulator, occam,
+# navigation-program and overswitch layers' tests and the reader mutation test
+# (scripts/sanitize.sh); `make sanitize SANITIZE_SCOPE=all` runs the whole suite.
 SANITIZE_SCOPE ?= layers
 sanitize: setup
 	@sh scripts/sanitize.sh $(SANITIZE_SCOPE)

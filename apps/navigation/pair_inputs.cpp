@@ -39,15 +39,12 @@ imaging::StereoRig rig_for(const std::optional<fs::path>& rig_file, const fs::pa
                                      left.string(), width, height, error.what()));
     }
   }
-  try {
-    imaging::StereoRig rig = imaging::StereoRig::load(*rig_file);
-    if (rig.width() != width || rig.height() != height)
-      throw CommandError(fmt::format("{}: the rig is {}x{} but the images are {}x{}",
-                                     rig_file->string(), rig.width(), rig.height(), width, height));
-    return rig;
-  } catch (const imaging::RigError& error) {
-    throw CommandError(error.what());
-  }
+  // A bad rig file is an io::InputError or an imaging::RigFileError, each naming the file.
+  imaging::StereoRig rig = imaging::StereoRig::load(*rig_file);
+  if (rig.width() != width || rig.height() != height)
+    throw CommandError(fmt::format("{}: the rig is {}x{} but the images are {}x{}",
+                                   rig_file->string(), rig.width(), rig.height(), width, height));
+  return rig;
 }
 
 imaging::Image<std::uint8_t> aligned_right(const std::optional<fs::path>& calibration,

@@ -36,7 +36,9 @@ imaging::Attitude pair_attitude(const PairOptions& options);
 imaging::Image<std::uint8_t> read_grey(const std::filesystem::path& path);
 
 /// The rig file's rig, which must have the images' size, or without one the paper's rig at
-/// that size; CommandError naming the file (or `left` for the images) otherwise.
+/// that size. A file that cannot be read is an io::InputError, a wrong one an
+/// imaging::RigFileError, each naming the file; a rig of another size is a CommandError naming
+/// the file (or `left` for the images).
 imaging::StereoRig rig_for(const std::optional<std::filesystem::path>& rig_file,
                            const std::filesystem::path& left, int width, int height);
 

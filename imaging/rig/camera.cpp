@@ -27,8 +27,7 @@ void validate(const RigParameters& parameters) {
   for (const detail::RigField& field : detail::rig_fields()) {
     const double value = field.get(parameters);
     if (auto problem = detail::rig_value_problem(field, value))
-      throw RigError(
-          fmt::format("rig parameter {}.{} = {}: {}", field.table, field.key, value, *problem));
+      throw RigError(fmt::format("rig parameter '{}.{}': {}", field.table, field.key, *problem));
   }
   if (auto problem = detail::rig_geometry_problem(parameters))
     throw RigError(fmt::format("rig: {}", *problem));

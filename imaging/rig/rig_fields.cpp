@@ -3,6 +3,7 @@
 #include "rig/rig_fields.hpp"
 
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/io/numbers/checked_number.hpp"
 
 #include <fmt/format.h>
 
@@ -93,10 +94,11 @@ std::span<const RigField> rig_fields() {
 
 std::optional<std::string> rig_value_problem(const RigField& field, double value) {
   if (!std::isfinite(value))
-    return "must be a finite number";
+    return fmt::format("must be a finite number, not {}", value);
   if (value >= field.low && value <= field.high)
     return std::nullopt;
-  return fmt::format("must be between {} and {} (got {})", field.low, field.high, value);
+  return fmt::format("{} is out of range: it must be {}", value,
+                     io::range_text(field.low, field.high));
 }
 
 std::optional<std::string> rig_geometry_problem(const RigParameters& p) {

@@ -26,7 +26,8 @@ struct RigField {
 /// Every key of the rig file, in file order.
 std::span<const RigField> rig_fields();
 
-/// Why a value is not acceptable for a field, or nothing if it is.
+/// Why a value is not acceptable for a field, or nothing if it is, in the words a rig file's
+/// reader (io::TomlTable::number_in) uses: "V is out of range: it must be between L and H".
 std::optional<std::string> rig_value_problem(const RigField& field, double value);
 
 /// The paper's reference obstacle (section 2), whose parallax `marsokhod rig` reports: a 30 cm

@@ -3,12 +3,14 @@
 #include "rig/rig_fields.hpp"
 
 #include "marsokhod/imaging/rig/camera.hpp"
-#include "marsokhod/imaging/rig/toml_document.hpp"
 #include "marsokhod/io/formats/toml_file.hpp"
+#include "marsokhod/io/formats/toml_float.hpp"
+#include "marsokhod/io/formats/toml_table.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <string>
 #include <string_view>
 
 namespace marsokhod::imaging {
@@ -18,96 +20,73 @@ constexpr std::string_view kRigTable = "rig";
 constexpr std::string_view kMisalignmentKey = "right_misalignment";
 constexpr std::string_view kMisalignmentTable = "rig.right_misalignment";
 
-/// Reads a rig file and reports every problem as a RigError naming the file and the line.
-class RigFileReader {
-public:
-  explicit RigFileReader(const std::filesystem::path& path) : document_(path, "rig") {}
+/// A table of a rig file whose errors are RigFileErrors naming its keys in full
+/// ('rig.baseline_m'); `name` is the table's ("rig", "rig.right_misalignment"), empty for the
+/// whole file.
+io::TomlTable rig_table(const toml::table& table, const std::string& file, std::string_view name) {
+  return io::TomlTable(table, file, "", io::throw_keyed<RigFileError>, std::string(name));
+}
 
-  RigParameters read() const {
-    const toml::table document = document_.parse();
-    const toml::node* rig = nullptr;
-    for (auto&& [key, node] : document) {
-      if (key.str() != kRigTable)
-        fail(key.source(),
-             fmt::format("unknown key '{}' (a rig file has one [rig] table)", key.str()));
-      rig = &node;
-    }
-    if (rig == nullptr)
-      document_.fail("no [rig] table");
-    RigParameters parameters;
-    read_table(*rig, kRigTable, parameters);
-    return parameters;
+/// Refuses a key that is no field of the table `name` (nor, in [rig], its sub-table), listing
+/// the known ones.
+void reject_unknown_keys(io::TomlTable& table, std::string_view name) {
+  std::string known;
+  for (const detail::RigField& field : detail::rig_fields()) {
+    if (field.table != name)
+      continue;
+    table.expect_keys({field.key});
+    known += known.empty() ? "" : ", ";
+    known += field.key;
   }
-
-private:
-  [[noreturn]] void fail(const toml::source_region& where, const std::string& problem) const {
-    document_.fail(where, problem);
+  if (name == kRigTable) {
+    table.expect_keys({kMisalignmentKey});
+    known += fmt::format(", [{}]", kMisalignmentTable);
   }
+  table.reject_unknown_keys(fmt::format("unknown key (known keys: {})", known));
+}
 
-  const toml::table& as_table(const toml::node& node, std::string_view name) const {
-    if (!node.is_table())
-      fail(node.source(),
-           fmt::format("key '{}' must be a table (got {})", name, io::toml_type_name(node.type())));
-    return *node.as_table();
-  }
-
-  void read_table(const toml::node& node, std::string_view name, RigParameters& out) const {
-    for (auto&& [key, value] : as_table(node, name)) {
-      if (name == kRigTable && key.str() == kMisalignmentKey) {
-        read_table(value, kMisalignmentTable, out);
-        continue;
-      }
-      read_value(find_field(name, key), value, out);
-    }
-  }
-
-  const detail::RigField& find_field(std::string_view table, const toml::key& key) const {
-    std::string known;
-    for (const detail::RigField& field : detail::rig_fields()) {
-      if (field.table != table)
-        continue;
-      if (field.key == key.str())
-        return field;
-      known += known.empty() ? "" : ", ";
-      known += field.key;
-    }
-    if (table == kRigTable)
-      known += fmt::format(", [{}]", kMisalignmentTable);
-    fail(key.source(),
-         fmt::format("unknown key '{}.{}' (known keys: {})", table, key.str(), known));
-  }
-
-  void read_value(const detail::RigField& field, const toml::node& node, RigParameters& out) const {
-    const std::string name = fmt::format("{}.{}", field.table, field.key);
-    const bool number_ok = node.is_integer() || (!field.integer && node.is_floating_point());
-    if (!number_ok)
-      fail(node.source(),
-           fmt::format("key '{}' must be {} (got {})", name,
-                       field.integer ? "an integer" : "a number", io::toml_type_name(node.type())));
-    const double value = node.is_integer() ? static_cast<double>(node.as_integer()->get())
-                                           : node.as_floating_point()->get();
-    if (auto problem = detail::rig_value_problem(field, value))
-      fail(node.source(), fmt::format("key '{}' {}", name, *problem));
-    field.set(out, value);
-  }
-
-  detail::TomlDocument<RigError> document_;
-};
-
-} // namespace
-
-using detail::toml_float;
-
-StereoRig StereoRig::load(const std::filesystem::path& path) {
-  const RigParameters parameters = RigFileReader(path).read();
-  try {
-    return StereoRig(parameters);
-  } catch (const RigError& error) {
-    throw RigError(fmt::format("{}: {}", path.string(), error.what()));
+/// The fields of the table `name` that the file gives, each in the range rig_fields() sets;
+/// the others keep their values in `out`. Integers are checked before they are narrowed.
+void read_fields(io::TomlTable& table, std::string_view name, RigParameters& out) {
+  reject_unknown_keys(table, name);
+  for (const detail::RigField& field : detail::rig_fields()) {
+    if (field.table != name || !table.table().contains(field.key))
+      continue;
+    if (field.integer)
+      field.set(out, table.integer_in(field.key, static_cast<int>(field.low),
+                                      static_cast<int>(field.high)));
+    else
+      field.set(out, table.number_in(field.key, field.low, field.high));
   }
 }
 
+} // namespace
+
+StereoRig StereoRig::load(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const toml::table document = io::parse_toml_file(path, "rig file");
+  io::TomlTable top = rig_table(document, file, "");
+  top.expect_keys({kRigTable});
+  top.reject_unknown_keys("unknown key: a rig file holds one [rig] table");
+  const toml::table* rig = top.optional_table(kRigTable);
+  if (rig == nullptr)
+    throw RigFileError(file, 0, std::string(kRigTable), "missing [rig] table");
+
+  RigParameters parameters;
+  io::TomlTable table = rig_table(*rig, file, kRigTable);
+  read_fields(table, kRigTable, parameters);
+  if (const toml::table* misalignment = table.optional_table(kMisalignmentKey)) {
+    io::TomlTable sub = rig_table(*misalignment, file, kMisalignmentTable);
+    read_fields(sub, kMisalignmentTable, parameters);
+  }
+  // Each value is in its range; the rig as a whole must still see the ground ahead.
+  if (auto problem = detail::rig_geometry_problem(parameters))
+    throw RigFileError(file, table.line(), "", *problem);
+  return StereoRig(parameters);
+}
+
 std::string StereoRig::to_toml() const {
+  using io::toml_float;
   const RigParameters& p = parameters_;
   const Misalignment& m = p.right_misalignment;
   return fmt::format("# Stereo rig (format: docs/formats.md, \"Rig files\").\n"

@@ -11,7 +11,7 @@
 namespace marsokhod::io {
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& problem) {
+[[noreturn]] void refuse(const std::filesystem::path& path, const std::string& problem) {
   throw InputError(path.string(), problem);
 }
 
@@ -28,12 +28,12 @@ std::string read_text_file(const std::filesystem::path& path, std::string_view k
                            std::size_t max_bytes) {
   InputFile file(path);
   if (file.error() != 0)
-    fail(path, fmt::format("cannot open the {}: {}", kind, error_text(file.error())));
+    refuse(path, fmt::format("cannot open the {}: {}", kind, error_text(file.error())));
   if (!file.is_regular())
-    fail(path, fmt::format("is {}; a {} must be a regular file", file.type_name(), kind));
+    refuse(path, fmt::format("is {}; a {} must be a regular file", file.type_name(), kind));
   if (file.size() > max_bytes)
-    fail(path, fmt::format("is {} bytes; a {} is at most {}", file.size(), kind,
-                           byte_count_text(max_bytes)));
+    refuse(path, fmt::format("is {} bytes; a {} is at most {}", file.size(), kind,
+                             byte_count_text(max_bytes)));
 
   std::string text(static_cast<std::size_t>(file.size()), '\0');
   try {
@@ -41,10 +41,10 @@ std::string read_text_file(const std::filesystem::path& path, std::string_view k
     // A file that grew after fstat is read only up to its size then; one byte more tells.
     std::uint8_t extra = 0;
     if (file.read(&extra, 1) > 0)
-      fail(path, fmt::format("grew while it was read; a {} is at most {}", kind,
-                             byte_count_text(max_bytes)));
+      refuse(path, fmt::format("grew while it was read; a {} is at most {}", kind,
+                               byte_count_text(max_bytes)));
   } catch (const std::system_error& error) {
-    fail(path, fmt::format("cannot read the {}: {}", kind, error.code().message()));
+    refuse(path, fmt::format("cannot read the {}: {}", kind, error.code().message()));
   }
   return text;
 }

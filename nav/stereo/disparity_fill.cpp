@@ -15,7 +15,7 @@
 namespace marsokhod::nav {
 namespace {
 
-constexpr float kUnknown = std::numeric_limits<float>::infinity();
+constexpr float kUnknownDisparity = std::numeric_limits<float>::infinity();
 
 // The first x from `x` on (or width) whose validity is zero (Zero) or not zero (!Zero), eight
 // bytes at a time: in a little-endian word the lowest set bit of the word itself (of its
@@ -51,8 +51,8 @@ bool fill_row(float* disparity, const std::uint8_t* valid, int width, std::uint6
     }
     const int run_start = x;
     x = run_end<true>(valid, x, width);
-    const float before = run_start > 0 ? disparity[run_start - 1] : kUnknown;
-    const float after = x < width ? disparity[x] : kUnknown;
+    const float before = run_start > 0 ? disparity[run_start - 1] : kUnknownDisparity;
+    const float after = x < width ? disparity[x] : kUnknownDisparity;
     const float value = std::min(before, after);
     std::fill(disparity + run_start, disparity + x, value);
     written += static_cast<std::uint64_t>(x - run_start);

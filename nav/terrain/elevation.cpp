@@ -14,13 +14,13 @@
 namespace marsokhod::nav {
 namespace {
 
-constexpr float kUnknown = std::numeric_limits<float>::infinity();
+constexpr float kUnknownPoint = std::numeric_limits<float>::infinity();
 
 TerrainPoints unknown_terrain(int width, int height, std::pmr::memory_resource* memory) {
-  TerrainPoints terrain{imaging::Image<float>(width, height, 1, kUnknown, memory),
-                        imaging::Image<float>(width, height, 1, kUnknown, memory),
-                        imaging::Image<float>(width, height, 1, kUnknown, memory),
-                        imaging::Image<float>(width, height, 1, kUnknown, memory), 0};
+  TerrainPoints terrain{imaging::Image<float>(width, height, 1, kUnknownPoint, memory),
+                        imaging::Image<float>(width, height, 1, kUnknownPoint, memory),
+                        imaging::Image<float>(width, height, 1, kUnknownPoint, memory),
+                        imaging::Image<float>(width, height, 1, kUnknownPoint, memory), 0};
   return terrain;
 }
 

@@ -4,6 +4,7 @@
 
 #include "lanes/simd_lanes.hpp"
 #include "zones/zone_bounds.hpp"
+#include "zones/zone_bytes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +12,6 @@
 
 namespace marsokhod::nav::detail {
 namespace {
-
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // Channel 0 of a zone map: find_zones' own map already is one.
 imaging::Image<std::uint8_t> first_channel(imaging::ImageView<const std::uint8_t> zone,

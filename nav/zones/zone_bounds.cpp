@@ -2,6 +2,8 @@
 
 #include "zones/zone_bounds.hpp"
 
+#include "zones/zone_bytes.hpp"
+
 #include "marsokhod/nav/zones/zones.hpp"
 
 #include <cmath>
@@ -14,11 +16,8 @@
 namespace marsokhod::nav::detail {
 namespace {
 
-constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
-
 bool binned_pixel(std::uint8_t zone, float elevation, float range, float max_range) {
-  return zone != kUnknown && std::isfinite(elevation) && range <= max_range;
+  return zone != kUnknownZone && std::isfinite(elevation) && range <= max_range;
 }
 
 // Pixels [from, width) of a row, one at a time.
@@ -92,7 +91,7 @@ GroundBounds mark_binned(const TerrainRows& terrain, imaging::ImageView<const st
   GroundBounds bounds;
 #ifdef __SSE2__
   BoundLanes lanes;
-  const __m128i unknown = _mm_set1_epi32(kUnknown);
+  const __m128i unknown = _mm_set1_epi32(kUnknownZone);
   // A finite float's magnitude is at most the largest one; NaN and infinities fail.
   const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
   const __m128 largest = _mm_set1_ps(std::numeric_limits<float>::max());

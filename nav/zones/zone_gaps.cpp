@@ -1,5 +1,6 @@
 // Zone rule: short, level gaps of unreliable pixels along a row bridged as traversable.
 
+#include "zones/zone_bytes.hpp"
 #include "zones/zone_rules.hpp"
 
 #include <algorithm>
@@ -8,9 +9,6 @@
 
 namespace marsokhod::nav::detail {
 namespace {
-
-constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
-constexpr auto kTraversable = static_cast<std::uint8_t>(Zone::traversable);
 
 // The ends of a gap are close on the ground and at about the same height.
 bool narrow_and_level(const TerrainRows::Row& points, const ZoneOptions& options, int left,
@@ -27,10 +25,11 @@ std::uint8_t run_verdict(const TerrainRows& terrain, const ZoneOptions& options,
   const int width = terrain.width();
   // The run's ends must be seen ground on both sides.
   if (options.bridged_gap_m <= 0.0 || first == 0 || end == width ||
-      row[first - 1] != kTraversable || row[end] != kTraversable)
-    return kUnknown;
+      row[first - 1] != kTraversableZone || row[end] != kTraversableZone)
+    return kUnknownZone;
   ++tests;
-  return narrow_and_level(terrain.row(y), options, first - 1, end) ? kTraversable : kUnknown;
+  return narrow_and_level(terrain.row(y), options, first - 1, end) ? kTraversableZone
+                                                                   : kUnknownZone;
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // Zone rule: pixels whose ground distance breaks their column's order are marked unknown.
 
 #include "zones/zone_buffer.hpp"
+#include "zones/zone_bytes.hpp"
 #include "zones/zone_rules.hpp"
 
 #include <algorithm>
@@ -11,8 +12,6 @@
 
 namespace marsokhod::nav::detail {
 namespace {
-
-constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
 
 // The judged pixels of columns first .. first + columns - 1, bottom row first, gathered row by
 // row so that the image is read in memory order: column x holds count[x - first] entries from
@@ -37,7 +36,7 @@ struct Columns {
       const std::uint8_t* judged = zone.row(y);
       const float* range = terrain.row(y).range;
       for (int x = first; x < end; ++x) {
-        if (judged[x] == kUnknown)
+        if (judged[x] == kUnknownZone)
           continue;
         const std::size_t at = next[static_cast<std::size_t>(x - first)]++;
         // Reading a row may let time pass, and an upset strike the column ends (occam's
@@ -163,7 +162,7 @@ void mark_contradictions(const LongestChain& chain, std::span<const float> range
       continue;
     if (rows[i] < 0 || rows[i] >= zone.height())
       throw std::range_error("zones: a pixel's row in the ordering check was struck");
-    zone(x, rows[i]) = kUnknown;
+    zone(x, rows[i]) = kUnknownZone;
   }
 }
 

@@ -1,5 +1,6 @@
 // Zone rule: unseen, out-of-range and unreliable pixels marked before the other rules.
 
+#include "zones/zone_bytes.hpp"
 #include "zones/zone_rules.hpp"
 
 #include <cmath>
@@ -7,9 +8,6 @@
 
 namespace marsokhod::nav::detail {
 namespace {
-
-constexpr auto kUnknown = static_cast<std::uint8_t>(Zone::unknown);
-constexpr auto kTraversable = static_cast<std::uint8_t>(Zone::traversable);
 
 // The largest float not above `limit`: a float lies beyond `limit` exactly when it lies beyond
 // this one, so the range test runs on floats, four to a register, with the same outcome.
@@ -30,7 +28,7 @@ void mark_seen(const float* elevation, const float* range, float max_range, int 
   constexpr float kLargest = std::numeric_limits<float>::max();
   for (int x = 0; x < width; ++x) {
     const bool seen = (std::fabs(elevation[x]) <= kLargest) & !(range[x] > max_range);
-    out[x] = seen ? kTraversable : kUnknown;
+    out[x] = seen ? kTraversableZone : kUnknownZone;
   }
 }
 
@@ -42,9 +40,9 @@ bool hold_back_unreliable(const std::uint8_t* reliable, std::ptrdiff_t channels,
                           int width, std::uint8_t* out) {
   std::uint8_t any = 0;
   const auto hold = [&](int x, std::uint8_t reliable_byte) {
-    const bool rejected = (out[x] == kTraversable) & (reliable_byte == 0);
+    const bool rejected = (out[x] == kTraversableZone) & (reliable_byte == 0);
     const bool held = rejected & !std::isnan(range[x]);
-    out[x] = held ? kUnreliable : rejected ? kUnknown : out[x];
+    out[x] = held ? kUnreliable : rejected ? kUnknownZone : out[x];
     any |= held ? 1 : 0;
   };
   if (channels == 1)

@@ -15,14 +15,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSource = MARSOKHOD_SOURCE_DIR;
+const fs::path kPlacementSource = MARSOKHOD_SOURCE_DIR;
 
 // Read once: a mutant changes the placement file only, never the platform it is checked on.
 const emulator::PlatformSpec& shipped_platform(const char* file) {
   static const emulator::PlatformSpec onboard =
-      emulator::load_platform(kSource / "platforms/onboard.toml");
+      emulator::load_platform(kPlacementSource / "platforms/onboard.toml");
   static const emulator::PlatformSpec pc_card =
-      emulator::load_platform(kSource / "platforms/pc-card.toml");
+      emulator::load_platform(kPlacementSource / "platforms/pc-card.toml");
   return std::string_view(file) == "onboard" ? onboard : pc_card;
 }
 

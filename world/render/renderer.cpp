@@ -22,8 +22,8 @@ namespace {
 
 constexpr std::uint64_t kLeftNoise = 0x4c454654; // stream labels
 constexpr std::uint64_t kRightNoise = 0x52494748;
-constexpr double kNoLimit = std::numeric_limits<double>::infinity();
-constexpr float kNoHit = std::numeric_limits<float>::infinity();
+constexpr double kNoDepthLimit = std::numeric_limits<double>::infinity();
+constexpr float kNoHitDepth = std::numeric_limits<float>::infinity();
 
 void check_options(const RenderOptions& options) {
   if (!std::isfinite(options.noise_sigma) || options.noise_sigma < 0.0)
@@ -53,7 +53,7 @@ public:
     return sampler_->grey(origin_ + *hit * direction, direction, *hit);
   }
   std::optional<double> cast(const Eigen::Vector3d& direction) const {
-    return mipmap_->first_hit(origin_, direction, kNoLimit, first_level_);
+    return mipmap_->first_hit(origin_, direction, kNoDepthLimit, first_level_);
   }
 
 private:
@@ -126,7 +126,7 @@ imaging::Image<std::uint8_t> Renderer::render_eye(const imaging::StereoRig& rig,
                      options.occlusion_tolerance_m, right_depth);
   }
   if (depth)
-    *depth = imaging::Image<float>(rig.width(), rig.height(), 1, kNoHit);
+    *depth = imaging::Image<float>(rig.width(), rig.height(), 1, kNoHitDepth);
   const int n = options.supersampling;
   const SurfaceSampler sampler(surface, terrain_->height, 1.0 / (rig.focal_px() * n),
                                options.filter_texture);

@@ -12,14 +12,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using marsokhod::testing::CommandResult;
+using marsokhod::testing::quoted;
 using marsokhod::testing::run_marsokhod;
-
-std::string quoted(const fs::path& path) {
-  std::string text = "'";
-  text.append(path.string());
-  text.push_back('\'');
-  return text;
-}
 
 // One small rendered scene, a regular file and a folder to misuse.
 class FileArguments : public ::testing::Test {

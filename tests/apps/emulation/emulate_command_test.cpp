@@ -21,7 +21,7 @@ using marsokhod::testing::quoted;
 using marsokhod::testing::run_marsokhod;
 using marsokhod::testing::slurp;
 
-fs::path fresh_folder(const std::string& name) {
+fs::path emulate_folder(const std::string& name) {
   return marsokhod::testing::fresh_folder("marsokhod-emulate-tests", name);
 }
 
@@ -44,7 +44,7 @@ Outcome emulate(const std::string& arguments) {
 // nav's outputs for a pair, as the reference the emulation must reproduce.
 fs::path nav_outputs(const fs::path& left, const fs::path& right, const std::string& extra,
                      const std::string& name) {
-  const fs::path out = fresh_folder(name);
+  const fs::path out = emulate_folder(name);
   const auto nav = run_marsokhod("nav " + quoted(left) + " " + quoted(right) + " " + extra +
                                  " --out " + quoted(out));
   EXPECT_EQ(nav.exit_code, 0) << nav.err;
@@ -67,48 +67,39 @@ bool same_as_nav_or_memory_fault(const Outcome& run, const fs::path& nav, const 
   return true;
 }
 
+// The command writes nav's files where its cycle runs: the emulated cycle itself is held to the
+// native one on world seeds 1..20 at both sizes by tests/nav_program/run/world_scene_cycles_test;
+// here the files the two commands write are compared on two scenes at each size.
 TEST(EmulateCommand, WritesTheSamePathAndDisparityAsNavForWorldSeedsOnBothPlatforms) {
-  int ran_on_card_at_128 = 0;
-  int ran_on_card_at_256 = 0;
-  int ran_onboard_at_128 = 0;
   for (const int size : {128, 256})
-    for (int seed = 1; seed <= 20; ++seed) {
-      const fs::path world =
-          fresh_folder("world-" + std::to_string(seed) + "-" + std::to_string(size));
+    for (const int seed : {1, 2}) {
+      const std::string scene = std::to_string(seed) + "-" + std::to_string(size);
+      const fs::path world = emulate_folder("world-" + scene);
       ASSERT_EQ(run_marsokhod("world --seed " + std::to_string(seed) + " --size " +
                               std::to_string(size) + " --out " + quoted(world))
                     .exit_code,
                 0);
       const fs::path nav = nav_outputs(world / "left.pgm", world / "right.pgm",
-                                       "--scene " + quoted(world / "scene.json"),
-                                       "nav-" + std::to_string(seed) + "-" + std::to_string(size));
+                                       "--scene " + quoted(world / "scene.json"), "nav-" + scene);
       for (const char* platform : {"pc-card", "onboard"}) {
-        const std::string what = std::string(platform) + " seed " + std::to_string(seed) +
-                                 " size " + std::to_string(size);
-        const fs::path out = fresh_folder(std::string("emulated-") + platform);
+        const std::string what = std::string(platform) + " seed " + scene;
+        const fs::path out = emulate_folder(std::string("emulated-") + platform);
         const Outcome run =
             emulate("--platform " + std::string(platform) + " --seed " + std::to_string(seed) +
                     " --size " + std::to_string(size) + " --out " + quoted(out));
         const bool ran = same_as_nav_or_memory_fault(run, nav, out, what);
-        const bool card = std::string(platform) == "pc-card";
-        ran_on_card_at_128 += ran && size == 128 && card ? 1 : 0;
-        ran_on_card_at_256 += ran && size == 256 && card ? 1 : 0;
-        ran_onboard_at_128 += ran && size == 128 && !card ? 1 : 0;
+        // The card holds both sizes, the onboard modules the paper's 128 x 128.
+        const bool must_run = std::string(platform) == "pc-card" || size == 128;
+        EXPECT_TRUE(ran || !must_run) << what;
       }
     }
-  // The PC card's 2 MB hold the 128 x 128 cycle with the terrain's maps, and the 256 x 256 one
-  // with the terrain kept as the disparity; the onboard modules' 256 KB hold the 128 x 128
-  // cycle with the matcher's bands, the terrain as the disparity and the zones in strips.
-  EXPECT_EQ(ran_on_card_at_128, 20);
-  EXPECT_EQ(ran_on_card_at_256, 20);
-  EXPECT_EQ(ran_onboard_at_128, 20);
 }
 
 TEST(EmulateCommand, GivenPairWithItsSceneEqualsTheRenderedScene) {
-  const fs::path world = fresh_folder("world-given");
+  const fs::path world = emulate_folder("world-given");
   ASSERT_EQ(run_marsokhod("world --seed 4 --size 128 --out " + quoted(world)).exit_code, 0);
-  const fs::path rendered = fresh_folder("rendered");
-  const fs::path given = fresh_folder("given");
+  const fs::path rendered = emulate_folder("rendered");
+  const fs::path given = emulate_folder("given");
   ASSERT_EQ(emulate("--platform pc-card --seed 4 --out " + quoted(rendered)).exit_code, 0);
   ASSERT_EQ(emulate(quoted(world / "left.pgm") + " " + quoted(world / "right.pgm") + " --scene " +
                     quoted(world / "scene.json") + " --platform pc-card --out " + quoted(given))
@@ -127,7 +118,7 @@ TEST(EmulateCommand, RealPairsEqualNavWhereTheMemoryHoldsThem) {
     const fs::path nav = nav_outputs(left, right, "", std::string("nav-") + name);
     // On the card as it is, and on a card with 32 MB (a what-if run that must hold them).
     for (const char* memory : {"", " --external-kb 32768"}) {
-      const fs::path out = fresh_folder(std::string("real-") + name);
+      const fs::path out = emulate_folder(std::string("real-") + name);
       const Outcome run = emulate(quoted(left) + " " + quoted(right) + " --platform pc-card" +
                                   memory + " --out " + quoted(out));
       const bool ran = same_as_nav_or_memory_fault(run, nav, out, std::string(name) + memory);
@@ -139,7 +130,7 @@ TEST(EmulateCommand, RealPairsEqualNavWhereTheMemoryHoldsThem) {
 }
 
 TEST(EmulateCommand, MemoryFaultStopsTheCycleNamingNodeProcessAndBuffer) {
-  const fs::path out = fresh_folder("fault");
+  const fs::path out = emulate_folder("fault");
   const fs::path trace = out / "trace.json";
   const Outcome run = emulate("--platform onboard --external-kb 32 --out " + quoted(out) +
                               " --trace " + quoted(trace));
@@ -172,7 +163,7 @@ TEST(EmulateCommand, TwoRunsGiveTheSameTraceAndSummaryApartFromHostTime) {
     std::vector<std::string> traces;
     std::vector<nlohmann::json> summaries;
     for (int run = 0; run < 2; ++run) {
-      const fs::path out = fresh_folder("repeat-" + std::to_string(run));
+      const fs::path out = emulate_folder("repeat-" + std::to_string(run));
       Outcome outcome = emulate("--platform " + platform + " --seed 3 --out " + quoted(out) +
                                 " --trace " + quoted(out / "trace.json"));
       ASSERT_EQ(outcome.exit_code, 0) << platform << ": " << outcome.err;
@@ -188,7 +179,7 @@ TEST(EmulateCommand, TwoRunsGiveTheSameTraceAndSummaryApartFromHostTime) {
 }
 
 TEST(EmulateCommand, TraceHasATrackPerCpuStageAndLinkDirection) {
-  const fs::path out = fresh_folder("tracks");
+  const fs::path out = emulate_folder("tracks");
   ASSERT_EQ(emulate("--platform pc-card --seed 2 --out " + quoted(out) + " --trace " +
                     quoted(out / "trace.json"))
                 .exit_code,
@@ -204,7 +195,7 @@ TEST(EmulateCommand, TraceHasATrackPerCpuStageAndLinkDirection) {
 }
 
 TEST(EmulateCommand, SweepRunsOneCyclePerMemorySizeAndWritesItsTableAndPicture) {
-  const fs::path out = fresh_folder("sweep");
+  const fs::path out = emulate_folder("sweep");
   const Outcome sweep = emulate(
       "--platform onboard --seed 1 --sweep-external-kb 32,256,1024,640 --out " + quoted(out));
   ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
@@ -216,7 +207,7 @@ TEST(EmulateCommand, SweepRunsOneCyclePerMemorySizeAndWritesItsTableAndPicture) 
   EXPECT_EQ(points[0]["memory_fault"]["node"], "module0");
   // 256 KB, as shipped, is the same cycle as a plain run; 1 MB keeps the terrain's maps and
   // does less again, so it is faster.
-  const Outcome plain = emulate("--platform onboard --seed 1 --out " + quoted(fresh_folder("p")));
+  const Outcome plain = emulate("--platform onboard --seed 1 --out " + quoted(emulate_folder("p")));
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   EXPECT_EQ(points[1]["emulated_seconds"], plain.summary["emulated_seconds"]);
   EXPECT_FALSE(points[1]["terrain_kept"].get<bool>());
@@ -245,9 +236,10 @@ TEST(EmulateCommand, SweepRunsOneCyclePerMemorySizeAndWritesItsTableAndPicture) 
 // The fitted style factor is the default and is reported; the table's own style (1) charges
 // every unit of work its table cycles, so the cycle is shorter, by at most the factor.
 TEST(EmulateCommand, RunsAtTheFittedOccamStyleUnlessToldAnother) {
-  const Outcome fitted = emulate("--platform pc-card --seed 2 --out " + quoted(fresh_folder("f")));
+  const Outcome fitted =
+      emulate("--platform pc-card --seed 2 --out " + quoted(emulate_folder("f")));
   const Outcome table =
-      emulate("--platform pc-card --seed 2 --occam-style 1 --out " + quoted(fresh_folder("t")));
+      emulate("--platform pc-card --seed 2 --occam-style 1 --out " + quoted(emulate_folder("t")));
   ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
   ASSERT_EQ(table.exit_code, 0) << table.err;
   const double factor = fitted.summary["occam_style_factor"];
@@ -260,7 +252,7 @@ TEST(EmulateCommand, RunsAtTheFittedOccamStyleUnlessToldAnother) {
 }
 
 TEST(EmulateCommand, RefusesWhatItCannotRun) {
-  const fs::path out = fresh_folder("refusals");
+  const fs::path out = emulate_folder("refusals");
   const struct {
     std::string arguments;
     int exit_code;

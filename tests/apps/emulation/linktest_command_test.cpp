@@ -21,18 +21,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::run_marsokhod;
+using testing::slurp;
 
 nlohmann::json linktest(const std::string& arguments) {
   const auto result = run_marsokhod("linktest --json --bytes 20000 " + arguments);
   EXPECT_EQ(result.exit_code, 0) << result.err;
   return nlohmann::json::parse(result.out);
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 TEST(LinktestCommand, TenMegabitOneWayMatchesTheDataBook) {

@@ -19,14 +19,14 @@ using marsokhod::testing::quoted;
 using marsokhod::testing::run_marsokhod;
 using marsokhod::testing::slurp;
 
-fs::path fresh_folder(const std::string& name) {
+fs::path reproduce_folder(const std::string& name) {
   return marsokhod::testing::fresh_folder("marsokhod-reproduce-tests", name);
 }
 
 // The default run, once for the whole file (about 6 s).
 const nlohmann::json& reproduction() {
   static const nlohmann::json json = [] {
-    const fs::path out = fresh_folder("default");
+    const fs::path out = reproduce_folder("default");
     const auto result = run_marsokhod("reproduce --json --out " + quoted(out));
     EXPECT_EQ(result.exit_code, 0) << result.err;
     return nlohmann::json::parse(slurp(out / "reproduce.json"));
@@ -117,8 +117,8 @@ TEST(ReproduceCommand, SensitivityMovesEachFigureWithTheParametersThePaperDoesNo
 }
 
 TEST(ReproduceCommand, WritesItsTablesAndPicturesAndRepeatsItsJsonByteForByte) {
-  const fs::path a = fresh_folder("a");
-  const fs::path b = fresh_folder("b");
+  const fs::path a = reproduce_folder("a");
+  const fs::path b = reproduce_folder("b");
   const std::string args = " --seeds 2..3 --sweep-external-kb 128,256,2048";
   ASSERT_EQ(run_marsokhod("reproduce --out " + quoted(a) + args).exit_code, 0);
   ASSERT_EQ(run_marsokhod("reproduce --out " + quoted(b) + args).exit_code, 0);
@@ -131,7 +131,8 @@ TEST(ReproduceCommand, WritesItsTablesAndPicturesAndRepeatsItsJsonByteForByte) {
 }
 
 TEST(ReproduceCommand, RefusesABackwardSeedRangeNamingTheOption) {
-  const auto result = run_marsokhod("reproduce --seeds 5..2 --out " + quoted(fresh_folder("bad")));
+  const auto result =
+      run_marsokhod("reproduce --seeds 5..2 --out " + quoted(reproduce_folder("bad")));
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("--seeds"), std::string::npos) << result.err;
 }

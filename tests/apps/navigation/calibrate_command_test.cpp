@@ -14,20 +14,11 @@
 namespace {
 
 namespace fs = std::filesystem;
+using marsokhod::testing::quoted;
 using marsokhod::testing::run_marsokhod;
 
-fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "marsokhod-calibrate-tests" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string quoted(const fs::path& path) {
-  std::string text = "'";
-  text.append(path.string());
-  text.push_back('\'');
-  return text;
+fs::path calibrate_folder(const std::string& name) {
+  return marsokhod::testing::fresh_folder("marsokhod-calibrate-tests", name);
 }
 
 // 1410" of tilt: 1.5 rows of vertical parallax at the centre of a 128 px image (f = 219.4 px).
@@ -36,7 +27,7 @@ constexpr double kTiltArcsec = 1410.0;
 // A misaligned 128 px scene, rendered once per test process into a folder of its own.
 const fs::path& scene() {
   static const fs::path dir = [] {
-    const fs::path folder = fresh_folder(
+    const fs::path folder = calibrate_folder(
         std::string("scene-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     const auto result = run_marsokhod(
         "world --terrain-size 16 --size 128 --seed 3 --misalign-tilt 1410 --out " + quoted(folder));
@@ -56,7 +47,7 @@ fs::path write_file(const fs::path& folder, const std::string& name, const std::
 }
 
 TEST(CalibrateCommand, MeasuresTheTiltsShiftAndNavUsesTheFile) {
-  const fs::path dir = fresh_folder("good");
+  const fs::path dir = calibrate_folder("good");
   const fs::path file = dir / "cal.toml";
   const auto result = run_marsokhod("calibrate " + pair() + " --out " + quoted(file) + " --json");
   ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -71,7 +62,7 @@ TEST(CalibrateCommand, MeasuresTheTiltsShiftAndNavUsesTheFile) {
 }
 
 TEST(CalibrateCommand, RefusesAPairOfDifferentSizes) {
-  const fs::path dir = fresh_folder("sizes");
+  const fs::path dir = calibrate_folder("sizes");
   const auto resize =
       run_marsokhod("world --terrain-size 16 --size 64 --seed 3 --out " + quoted(dir / "small"));
   ASSERT_EQ(resize.exit_code, 0) << resize.err;
@@ -84,7 +75,7 @@ TEST(CalibrateCommand, RefusesAPairOfDifferentSizes) {
 }
 
 TEST(CalibrateCommand, RefusesAMissingImageNamingIt) {
-  const fs::path dir = fresh_folder("missing");
+  const fs::path dir = calibrate_folder("missing");
   const auto result =
       run_marsokhod("calibrate " + quoted(dir / "nope.pgm") + " " + quoted(scene() / "right.pgm") +
                     " --out " + quoted(dir / "cal.toml"));
@@ -93,7 +84,7 @@ TEST(CalibrateCommand, RefusesAMissingImageNamingIt) {
 }
 
 TEST(CalibrateCommand, RefusesAUniformPairForLackOfTexture) {
-  const fs::path dir = fresh_folder("uniform");
+  const fs::path dir = calibrate_folder("uniform");
   std::string grey = "P5 64 64 255\n" + std::string(64 * 64, '\x80');
   const fs::path image = write_file(dir, "grey.pgm", grey);
   const auto result = run_marsokhod("calibrate " + quoted(image) + " " + quoted(image) + " --out " +
@@ -111,7 +102,7 @@ struct BadCalibration {
 class NavCalibrationErrors : public ::testing::TestWithParam<BadCalibration> {};
 
 TEST_P(NavCalibrationErrors, ExitWithStatusOneNamingTheFileAndTheProblem) {
-  const fs::path dir = fresh_folder(std::string("nav-") + GetParam().name);
+  const fs::path dir = calibrate_folder(std::string("nav-") + GetParam().name);
   const fs::path file =
       GetParam().text.empty() ? dir / "absent.toml" : write_file(dir, "cal.toml", GetParam().text);
   const auto result = run_marsokhod("nav " + pair() + " --out " + quoted(dir / "out") +
@@ -136,7 +127,8 @@ INSTANTIATE_TEST_SUITE_P(
                        "c0 = 1.5\ncx = 0.0\ncy = 0.0\ncxx = 0.0\ncxy = 0.0\n"
                        "cyy = 0.0\n",
                        "the calibration is for 256x256 images but the images are 128x128"},
-        BadCalibration{"incomplete", kTable.substr(0, kTable.find("cyy")), "is missing"}),
+        BadCalibration{"incomplete", kTable.substr(0, kTable.find("cyy")),
+                       ":1: 'vertical_parallax.cyy': missing"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 } // namespace

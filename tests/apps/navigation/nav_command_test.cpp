@@ -24,7 +24,7 @@ using marsokhod::testing::quoted;
 using marsokhod::testing::run_marsokhod;
 using marsokhod::testing::slurp;
 
-fs::path fresh_folder(const std::string& name) {
+fs::path nav_folder(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / "marsokhod-nav-tests" / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -35,7 +35,7 @@ fs::path fresh_folder(const std::string& name) {
 // a process of its own, in parallel, so each one renders into a folder named for its test.
 const fs::path& scene() {
   static const fs::path dir = [] {
-    const fs::path folder = fresh_folder(
+    const fs::path folder = nav_folder(
         std::string("scene-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     const auto result =
         run_marsokhod("world --terrain-size 16 --size 128 --seed 2 --out " + quoted(folder));
@@ -51,7 +51,7 @@ std::string nav_args(const fs::path& out) {
 }
 
 TEST(NavCommand, WritesEveryOutputAndThePathDocument) {
-  const fs::path out = fresh_folder("outputs");
+  const fs::path out = nav_folder("outputs");
   const auto result = run_marsokhod(nav_args(out) + " --json");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   for (const char* name : {"disparity.pfm", "disparity.png", "range.pfm", "elevation.pfm",
@@ -79,8 +79,8 @@ TEST(NavCommand, WritesEveryOutputAndThePathDocument) {
 }
 
 TEST(NavCommand, SameInputsGiveByteIdenticalFiles) {
-  const fs::path first = fresh_folder("repeat-1");
-  const fs::path second = fresh_folder("repeat-2");
+  const fs::path first = nav_folder("repeat-1");
+  const fs::path second = nav_folder("repeat-2");
   ASSERT_EQ(run_marsokhod(nav_args(first)).exit_code, 0);
   ASSERT_EQ(run_marsokhod(nav_args(second)).exit_code, 0);
   for (const char* name : {"disparity.pfm", "elevation.pfm", "zones.png", "path.json"})
@@ -88,7 +88,7 @@ TEST(NavCommand, SameInputsGiveByteIdenticalFiles) {
 }
 
 TEST(NavCommand, GroundTruthDisparityOfTheSceneGivesAPath) {
-  const fs::path out = fresh_folder("truth");
+  const fs::path out = nav_folder("truth");
   const auto result = run_marsokhod(nav_args(out) + " --disparity " +
                                     quoted(scene() / "gt_disparity.pfm") + " --json");
   ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -101,7 +101,7 @@ void write_grey(const fs::path& path, int width, int height, std::uint8_t grey) 
 }
 
 TEST(NavCommand, ImagesOfDifferentSizesAreAnErrorNamingBoth) {
-  const fs::path dir = fresh_folder("sizes");
+  const fs::path dir = nav_folder("sizes");
   write_grey(dir / "l.pgm", 64, 64, 100);
   write_grey(dir / "r.pgm", 64, 60, 100);
   const auto result = run_marsokhod("nav " + quoted(dir / "l.pgm") + " " + quoted(dir / "r.pgm") +
@@ -112,7 +112,7 @@ TEST(NavCommand, ImagesOfDifferentSizesAreAnErrorNamingBoth) {
 }
 
 TEST(NavCommand, ImagesTooSmallForThePyramidAreAnError) {
-  const fs::path dir = fresh_folder("tiny");
+  const fs::path dir = nav_folder("tiny");
   write_grey(dir / "l.pgm", 6, 6, 100);
   const auto result = run_marsokhod("nav " + quoted(dir / "l.pgm") + " " + quoted(dir / "l.pgm") +
                                     " --out " + quoted(dir / "out"));
@@ -123,7 +123,7 @@ TEST(NavCommand, ImagesTooSmallForThePyramidAreAnError) {
 
 TEST(NavCommand, AllBlackAndAllWhitePairsGiveNoPathWithAReason) {
   for (const std::uint8_t grey : {std::uint8_t{0}, std::uint8_t{255}}) {
-    const fs::path dir = fresh_folder("uniform-" + std::to_string(grey));
+    const fs::path dir = nav_folder("uniform-" + std::to_string(grey));
     write_grey(dir / "flat.pgm", 64, 64, grey);
     const auto result = run_marsokhod("nav " + quoted(dir / "flat.pgm") + " " +
                                       quoted(dir / "flat.pgm") + " --out " + quoted(dir / "out"));
@@ -136,7 +136,7 @@ TEST(NavCommand, AllBlackAndAllWhitePairsGiveNoPathWithAReason) {
 }
 
 TEST(NavCommand, NanInADisparityFileIsAnErrorNamingTheFileAndPixel) {
-  const fs::path dir = fresh_folder("nan");
+  const fs::path dir = nav_folder("nan");
   Image<float> disparity(128, 128, 1, 20.0F);
   disparity(5, 7) = std::numeric_limits<float>::quiet_NaN();
   marsokhod::imaging::write_image(dir / "d.pfm", disparity.view());
@@ -147,7 +147,7 @@ TEST(NavCommand, NanInADisparityFileIsAnErrorNamingTheFileAndPixel) {
 }
 
 TEST(NavCommand, InfiniteDisparitiesAreUnknownGroundAndGiveNoPath) {
-  const fs::path dir = fresh_folder("inf");
+  const fs::path dir = nav_folder("inf");
   const Image<float> unknown(128, 128, 1, std::numeric_limits<float>::infinity());
   marsokhod::imaging::write_image(dir / "d.pfm", unknown.view());
   const auto result =
@@ -159,7 +159,7 @@ TEST(NavCommand, InfiniteDisparitiesAreUnknownGroundAndGiveNoPath) {
 }
 
 TEST(NavCommand, AFloatImageAsLeftIsAnErrorNamingTheFile) {
-  const fs::path dir = fresh_folder("float-left");
+  const fs::path dir = nav_folder("float-left");
   const Image<float> pixels(64, 64, 1, std::numeric_limits<float>::infinity());
   marsokhod::imaging::write_image(dir / "left.pfm", pixels.view());
   const auto result = run_marsokhod("nav " + quoted(dir / "left.pfm") + " " +
@@ -169,7 +169,7 @@ TEST(NavCommand, AFloatImageAsLeftIsAnErrorNamingTheFile) {
 }
 
 TEST(NavCommand, ARigWithANegativeBaselineIsAnError) {
-  const fs::path dir = fresh_folder("rig");
+  const fs::path dir = nav_folder("rig");
   std::ofstream(dir / "bad.toml") << "[rig]\nbaseline_m = -0.5\nwidth_px = 128\nheight_px = 128\n";
   const auto result = run_marsokhod(nav_args(dir / "out") + " --rig " + quoted(dir / "bad.toml"));
   EXPECT_EQ(result.exit_code, 1);
@@ -178,7 +178,7 @@ TEST(NavCommand, ARigWithANegativeBaselineIsAnError) {
 }
 
 TEST(NavCommand, ARigOfAnotherSizeIsAnError) {
-  const fs::path dir = fresh_folder("rig-size");
+  const fs::path dir = nav_folder("rig-size");
   std::ofstream(dir / "rig.toml") << "[rig]\nwidth_px = 256\nheight_px = 256\n";
   const auto result = run_marsokhod(nav_args(dir / "out") + " --rig " + quoted(dir / "rig.toml"));
   EXPECT_EQ(result.exit_code, 1);
@@ -187,7 +187,7 @@ TEST(NavCommand, ARigOfAnotherSizeIsAnError) {
 }
 
 TEST(NavCommand, TheSceneFilesAttitudeIsUsedAndBadSceneFilesAreErrorsNamingThem) {
-  const fs::path out = fresh_folder("scene-attitude");
+  const fs::path out = nav_folder("scene-attitude");
   const auto result = run_marsokhod(nav_args(out / "out") + " --scene " +
                                     quoted(scene() / "scene.json") + " --json");
   EXPECT_EQ(result.exit_code, 0) << result.err;

@@ -17,20 +17,16 @@ namespace {
 
 namespace fs = std::filesystem;
 using marsokhod::testing::run_marsokhod;
+using marsokhod::testing::slurp;
 
 // A small terrain and small images keep each run short; the code paths are those of the
 // default 48 m site.
 const std::string kQuick = "--terrain-size 16 --size 64 ";
 
-fs::path fresh_folder(const std::string& name) {
+fs::path world_folder(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / "marsokhod-world-tests" / name;
   fs::remove_all(dir);
   return dir;
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 const std::vector<std::string> kFiles = {
@@ -39,7 +35,7 @@ const std::vector<std::string> kFiles = {
     "gt_range.png",     "gt_elevation.png", "gt_obstacles.png", "scene.json"};
 
 TEST(WorldCommand, WritesEveryOutputAndAJsonSummary) {
-  const fs::path dir = fresh_folder("outputs") / "nested";
+  const fs::path dir = world_folder("outputs") / "nested";
   const auto result = run_marsokhod("world " + kQuick + "--seed 3 --light low-sun --json --out '" +
                                     dir.string() + "'");
   ASSERT_EQ(result.exit_code, 0) << result.err;
@@ -69,9 +65,9 @@ TEST(WorldCommand, WritesEveryOutputAndAJsonSummary) {
 }
 
 TEST(WorldCommand, SameSeedGivesByteIdenticalFilesAndAnotherSeedDiffers) {
-  const fs::path a = fresh_folder("same-a");
-  const fs::path b = fresh_folder("same-b");
-  const fs::path c = fresh_folder("other-seed");
+  const fs::path a = world_folder("same-a");
+  const fs::path b = world_folder("same-b");
+  const fs::path c = world_folder("other-seed");
   ASSERT_EQ(run_marsokhod("world " + kQuick + "--seed 9 --out '" + a.string() + "'").exit_code, 0);
   ASSERT_EQ(run_marsokhod("world " + kQuick + "--seed 9 --out '" + b.string() + "'").exit_code, 0);
   ASSERT_EQ(run_marsokhod("world " + kQuick + "--seed 10 --out '" + c.string() + "'").exit_code, 0);
@@ -85,7 +81,7 @@ TEST(WorldCommand, SameSeedGivesByteIdenticalFilesAndAnotherSeedDiffers) {
 }
 
 TEST(WorldCommand, HumanSummaryNamesTheFolderAndTheFiles) {
-  const fs::path dir = fresh_folder("human");
+  const fs::path dir = world_folder("human");
   const auto result = run_marsokhod("world " + kQuick + "--out '" + dir.string() + "'");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find(dir.string()), std::string::npos) << result.out;
@@ -95,7 +91,7 @@ TEST(WorldCommand, HumanSummaryNamesTheFolderAndTheFiles) {
 }
 
 TEST(WorldCommand, BadOptionValuesAreUsageErrors) {
-  const fs::path dir = fresh_folder("bad");
+  const fs::path dir = world_folder("bad");
   const std::string out = " --out '" + dir.string() + "'";
   for (const char* options :
        {"--size 8", "--size 4096", "--rocks 0.7", "--rocks -0.1", "--light midnight", "--noise -1",
@@ -108,7 +104,7 @@ TEST(WorldCommand, BadOptionValuesAreUsageErrors) {
 }
 
 TEST(WorldCommand, UnwritableOutputFolderIsARuntimeErrorNamingIt) {
-  const fs::path base = fresh_folder("unwritable");
+  const fs::path base = world_folder("unwritable");
   fs::create_directories(base);
   const fs::path blocker = base / "a-file";
   std::ofstream(blocker) << "not a folder";
@@ -119,7 +115,7 @@ TEST(WorldCommand, UnwritableOutputFolderIsARuntimeErrorNamingIt) {
 }
 
 TEST(WorldCommand, MissingRigFileIsARuntimeErrorNamingIt) {
-  const fs::path dir = fresh_folder("rig");
+  const fs::path dir = world_folder("rig");
   const auto result =
       run_marsokhod("world " + kQuick + "--rig /nonexistent/rig.toml --out '" + dir.string() + "'");
   EXPECT_EQ(result.exit_code, 1);

@@ -4,6 +4,7 @@
 // (k + 1) x 1.1 us; its acknowledge goes 0.55 us after its start bit and ends 0.2 us later.
 
 #include "emulator/links/hand_link_timing.hpp"
+#include "support/test_files.hpp"
 
 #include "marsokhod/emulator/links/link.hpp"
 
@@ -24,13 +25,6 @@ using link_testing::hand_timing;
 
 constexpr Tick kByte = 1'100'000;  // one data packet at 10 Mbit/s
 constexpr Tick kAckDone = 750'000; // a byte's acknowledge ends this long after its start bit
-
-std::vector<std::byte> pattern(std::size_t size) {
-  std::vector<std::byte> bytes(size);
-  for (std::size_t i = 0; i < size; ++i)
-    bytes[i] = std::byte(static_cast<unsigned char>(i * 7 + 3));
-  return bytes;
-}
 
 struct WireFaults : testing::Test {
   Kernel kernel;
@@ -55,7 +49,7 @@ struct WireFaults : testing::Test {
 };
 
 TEST_F(WireFaults, FlippedBitArrivesInvertedAndEveryOtherByteIntact) {
-  const std::vector<std::byte> sent = pattern(10);
+  const std::vector<std::byte> sent = test_support::byte_pattern(10);
   std::vector<std::byte> received(10);
   link.flip_data_bit(0, 3, 5);
   stream(sent, received);
@@ -69,8 +63,8 @@ TEST_F(WireFaults, FlippedBitArrivesInvertedAndEveryOtherByteIntact) {
 }
 
 TEST_F(WireFaults, FlipsCountBytesAcrossMessagesFromWhenTheyAreAsked) {
-  const std::vector<std::byte> first = pattern(4);
-  const std::vector<std::byte> second = pattern(4);
+  const std::vector<std::byte> first = test_support::byte_pattern(4);
+  const std::vector<std::byte> second = test_support::byte_pattern(4);
   std::vector<std::byte> at_b(8);
   link.flip_data_bit(0, 5, 0); // the second byte of the second message
   link.flip_data_bit(0, 5, 7); // the same byte, another bit
@@ -89,7 +83,7 @@ TEST_F(WireFaults, FlipsCountBytesAcrossMessagesFromWhenTheyAreAsked) {
 }
 
 TEST_F(WireFaults, StreamWithAFlipInItsMiddleKeepsTheTimesOfSteppingByteByByte) {
-  const std::vector<std::byte> sent = pattern(1000);
+  const std::vector<std::byte> sent = test_support::byte_pattern(1000);
   std::vector<std::byte> received(1000);
   link.flip_data_bit(0, 500, 1);
   // Asked at 300 us, when bytes 0..272 have started (272 x 1.1 = 299.2 us): byte 283.
@@ -108,7 +102,7 @@ TEST_F(WireFaults, StreamWithAFlipInItsMiddleKeepsTheTimesOfSteppingByteByByte) 
 
 TEST_F(WireFaults, DeadWireCarriesNoneOfItsEndsData) {
   link.set_wire_dead(1, true);
-  const std::vector<std::byte> sent = pattern(4);
+  const std::vector<std::byte> sent = test_support::byte_pattern(4);
   std::vector<std::byte> at_a(4, std::byte{0});
   kernel.spawn(
       b, "sender", [&] { link.port(1).output(sent); });
@@ -122,7 +116,7 @@ TEST_F(WireFaults, DeadWireCarriesNoneOfItsEndsData) {
 
 TEST_F(WireFaults, DeadWireBackStallsTheOutputAfterExactlyOneByte) {
   link.set_wire_dead(1, true);
-  const std::vector<std::byte> sent = pattern(10);
+  const std::vector<std::byte> sent = test_support::byte_pattern(10);
   std::vector<std::byte> received(10, std::byte{0});
   stream(sent, received);
   const RunResult result = kernel.run();
@@ -139,8 +133,8 @@ TEST_F(WireFaults, DeadWireBackStallsTheOutputAfterExactlyOneByte) {
 }
 
 TEST_F(WireFaults, TransientDeadWireLosesWhatWentMeanwhileAndLetsLaterTransfersThrough) {
-  const std::vector<std::byte> lost = pattern(4);
-  const std::vector<std::byte> later = pattern(6);
+  const std::vector<std::byte> lost = test_support::byte_pattern(4);
+  const std::vector<std::byte> later = test_support::byte_pattern(6);
   std::vector<std::byte> received(6);
   LinkTransferResult first;
   Tick second_done = -1;
@@ -168,7 +162,7 @@ TEST_F(WireFaults, TransientDeadWireLosesWhatWentMeanwhileAndLetsLaterTransfersT
 }
 
 TEST_F(WireFaults, LostAcknowledgeLeavesTheOutputWaitingForever) {
-  const std::vector<std::byte> sent = pattern(1000);
+  const std::vector<std::byte> sent = test_support::byte_pattern(1000);
   std::vector<std::byte> received(1000);
   // At 500 us the acknowledge of byte 454 has started (454 x 1.1 + 0.55 = 499.95 us): the
   // next one, byte 455's at 501.05 us, is lost. Byte 455 itself (from 500.5 us) arrives.
@@ -187,7 +181,7 @@ TEST_F(WireFaults, OnlyTheNextAcknowledgeIsLost) {
   // Lost before anything is sent: byte 0's acknowledge. The sender then waits; its reset at
   // 5 us lets a second message through with every acknowledge.
   link.lose_acknowledge(1);
-  const std::vector<std::byte> sent = pattern(3);
+  const std::vector<std::byte> sent = test_support::byte_pattern(3);
   std::vector<std::byte> received(3);
   LinkTransferResult first;
   LinkTransferResult second;
@@ -237,7 +231,7 @@ private:
 TEST_F(WireFaults, EachFaultAndResetMarksTheLinksTrackWhenItHappens) {
   InstantLog log;
   kernel.set_trace(&log);
-  const std::vector<std::byte> sent = pattern(3);
+  const std::vector<std::byte> sent = test_support::byte_pattern(3);
   std::vector<std::byte> received(3);
   link.flip_data_bit(0, 1, 0);
   // Byte 2's acknowledge, from 2.75 us, is the next one after 2.5 us.

@@ -1,5 +1,7 @@
 // The cameras' frame store: image requests and answers over its links.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/emulator/links/link_frame_store.hpp"
 
 #include <gtest/gtest.h>
@@ -10,7 +12,7 @@
 namespace marsokhod::emulator {
 namespace {
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 /// A recognisable image per camera.
 std::vector<std::byte> test_image(int camera, std::size_t bytes) {

@@ -4,6 +4,7 @@
 // (k + 1) x 1.1 us; its acknowledge goes 0.55 us after its start bit and ends 0.2 us later.
 
 #include "emulator/links/hand_link_timing.hpp"
+#include "support/test_files.hpp"
 
 #include "marsokhod/emulator/links/link.hpp"
 
@@ -20,19 +21,12 @@ using link_testing::hand_timing;
 constexpr Tick kByte = 1'100'000;
 constexpr Tick kAckDone = 750'000;
 
-std::vector<std::byte> pattern(std::size_t size, unsigned seed = 3) {
-  std::vector<std::byte> bytes(size);
-  for (std::size_t i = 0; i < size; ++i)
-    bytes[i] = std::byte(static_cast<unsigned char>(i * 7 + seed));
-  return bytes;
-}
-
 struct LinkReset : testing::Test {
   Kernel kernel;
   Cpu& a = kernel.add_cpu("a");
   Cpu& b = kernel.add_cpu("b");
   Link link{kernel, "a.link0", "b.link0", hand_timing()};
-  const std::vector<std::byte> sent = pattern(1000);
+  const std::vector<std::byte> sent = test_support::byte_pattern(1000);
   std::vector<std::byte> received = std::vector<std::byte>(1000);
 
   /// 1000 bytes from a to b whose byte 455's acknowledge is lost: at 500 us byte 454's has
@@ -77,7 +71,7 @@ TEST_F(LinkReset, ReleasesAnOutputHungOnALostAcknowledgeAtOnceAndCutShort) {
 
 TEST_F(LinkReset, WithoutThePeersResetItsInputTakesTheNextMessage) {
   lose_an_acknowledge_mid_stream();
-  const std::vector<std::byte> next = pattern(8, 100);
+  const std::vector<std::byte> next = test_support::byte_pattern(8, 100);
   kernel.spawn(
       a, "sender",
       [&] {
@@ -96,7 +90,7 @@ TEST_F(LinkReset, WithoutThePeersResetItsInputTakesTheNextMessage) {
 
 TEST_F(LinkReset, BothEndsResetCarryTheNextMessageWhole) {
   lose_an_acknowledge_mid_stream();
-  const std::vector<std::byte> next = pattern(8, 100);
+  const std::vector<std::byte> next = test_support::byte_pattern(8, 100);
   std::vector<std::byte> next_received(8);
   LinkTransferResult cut_input;
   Tick sender_done = -1;
@@ -126,7 +120,7 @@ TEST_F(LinkReset, BothEndsResetCarryTheNextMessageWhole) {
 }
 
 TEST_F(LinkReset, CutsAnInputShortWithTheBytesStored) {
-  const std::vector<std::byte> four = pattern(4);
+  const std::vector<std::byte> four = test_support::byte_pattern(4);
   LinkTransferResult result;
   Tick resumed = -1;
   Tick sender_done = -1;

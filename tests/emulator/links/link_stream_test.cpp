@@ -1,5 +1,7 @@
 // The link throughput experiment: streams arrive intact at the wire rate.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/emulator/links/link_stream.hpp"
 
 #include <gtest/gtest.h>
@@ -9,7 +11,7 @@
 namespace marsokhod::emulator {
 namespace {
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 TEST(LinkStream, OneWayStreamArrivesIntactAtTheWireRate) {
   const PlatformSpec onboard = load_platform(kPlatforms / "onboard.toml");

@@ -1,6 +1,7 @@
 // T805 links: transfers, handshake timing, dead ends and broken wires.
 
 #include "emulator/links/hand_link_timing.hpp"
+#include "support/test_files.hpp"
 
 #include "marsokhod/emulator/links/link.hpp"
 #include "marsokhod/emulator/links/link_network.hpp"
@@ -15,16 +16,9 @@
 namespace marsokhod::emulator {
 namespace {
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 using link_testing::hand_timing;
-
-std::vector<std::byte> pattern(std::size_t size) {
-  std::vector<std::byte> bytes(size);
-  for (std::size_t i = 0; i < size; ++i)
-    bytes[i] = std::byte(static_cast<unsigned char>(i * 7 + 3));
-  return bytes;
-}
 
 struct TwoNodes : testing::Test {
   Kernel kernel;
@@ -34,7 +28,7 @@ struct TwoNodes : testing::Test {
 };
 
 TEST_F(TwoNodes, MessageArrivesIntactAtTheWireRate) {
-  const std::vector<std::byte> sent = pattern(1000);
+  const std::vector<std::byte> sent = test_support::byte_pattern(1000);
   std::vector<std::byte> received(1000);
   Tick sender_done = 0;
   Tick receiver_done = 0;
@@ -55,7 +49,7 @@ TEST_F(TwoNodes, MessageArrivesIntactAtTheWireRate) {
 }
 
 TEST_F(TwoNodes, LateReceiverHoldsTheSenderAfterOneByte) {
-  const std::vector<std::byte> sent = pattern(10);
+  const std::vector<std::byte> sent = test_support::byte_pattern(10);
   std::vector<std::byte> received(10);
   Tick receiver_done = 0;
   kernel.spawn(a, "sender", [&] { link.port(0).output(sent); });
@@ -72,7 +66,7 @@ TEST_F(TwoNodes, LateReceiverHoldsTheSenderAfterOneByte) {
 }
 
 TEST_F(TwoNodes, LinkTransferOverlapsComputationOnTheSameNode) {
-  const std::vector<std::byte> sent = pattern(100);
+  const std::vector<std::byte> sent = test_support::byte_pattern(100);
   std::vector<std::byte> received(100);
   Tick compute_done = 0;
   kernel.spawn(a, "sender", [&] { link.port(0).output(sent); });
@@ -92,7 +86,7 @@ TEST_F(TwoNodes, LinkTransferOverlapsComputationOnTheSameNode) {
 TEST_F(TwoNodes, ArrivalListenerFiresWhenAByteWaits) {
   Tick heard = -1;
   link.port(1).set_arrival_listener([&] { heard = kernel.now(); });
-  const std::vector<std::byte> sent = pattern(3);
+  const std::vector<std::byte> sent = test_support::byte_pattern(3);
   kernel.spawn(a, "sender", [&] { link.port(0).output(sent); });
   kernel.run();
   EXPECT_EQ(heard, 1'100'000); // end of the first data packet
@@ -100,7 +94,7 @@ TEST_F(TwoNodes, ArrivalListenerFiresWhenAByteWaits) {
 }
 
 TEST_F(TwoNodes, PoweredOffPeerStopsTrafficAndItsPeersTimedWaitExpires) {
-  const std::vector<std::byte> sent = pattern(1000);
+  const std::vector<std::byte> sent = test_support::byte_pattern(1000);
   std::vector<std::byte> received(1000);
   bool sender_finished = false;
   bool timed_out = false;
@@ -139,7 +133,7 @@ TEST_F(TwoNodes, PoweredOffPeerStopsTrafficAndItsPeersTimedWaitExpires) {
 
 TEST_F(TwoNodes, BrokenCableCarriesNothing) {
   link.set_broken(true);
-  const std::vector<std::byte> sent = pattern(4);
+  const std::vector<std::byte> sent = test_support::byte_pattern(4);
   std::vector<std::byte> received(4, std::byte{0});
   kernel.spawn(
       a, "sender", [&] { link.port(0).output(sent); });
@@ -150,7 +144,7 @@ TEST_F(TwoNodes, BrokenCableCarriesNothing) {
 }
 
 TEST_F(TwoNodes, LinkWorksAgainAfterThePeerIsPoweredBackOn) {
-  const std::vector<std::byte> sent = pattern(20);
+  const std::vector<std::byte> sent = test_support::byte_pattern(20);
   std::vector<std::byte> received(20);
   kernel.spawn(
       b, "doomed",
@@ -178,7 +172,7 @@ TEST_F(TwoNodes, LinkWorksAgainAfterThePeerIsPoweredBackOn) {
 }
 
 TEST_F(TwoNodes, BothDirectionsAtOnceDeliverEverything) {
-  const std::vector<std::byte> ab = pattern(300);
+  const std::vector<std::byte> ab = test_support::byte_pattern(300);
   std::vector<std::byte> ba(300);
   std::iota(reinterpret_cast<unsigned char*>(ba.data()),
             reinterpret_cast<unsigned char*>(ba.data()) + ba.size(), static_cast<unsigned char>(1));
@@ -207,7 +201,7 @@ TEST(LinkNetwork, OnboardModulesTalkOnlyWhenPowered) {
   ASSERT_NE(network.port("module0", 0), nullptr);
   EXPECT_EQ(network.port("module0", 0)->name(), "module0.link0");
   EXPECT_EQ(&network.port("module0", 0)->link(), &network.port("module1", 0)->link());
-  const std::vector<std::byte> sent = pattern(64);
+  const std::vector<std::byte> sent = test_support::byte_pattern(64);
   std::vector<std::byte> received(64);
   bool to_spare_done = false;
   kernel.spawn(
@@ -240,7 +234,7 @@ TEST(LinkNetwork, NodePowerSwitchReachesItsLinks) {
   network.attach(m0);
   network.attach(m1);
   ASSERT_EQ(m0.link(0), network.port("module0", 0));
-  const std::vector<std::byte> sent = pattern(1000);
+  const std::vector<std::byte> sent = test_support::byte_pattern(1000);
   std::vector<std::byte> received(1000);
   bool delivered = false;
   m0.spawn(

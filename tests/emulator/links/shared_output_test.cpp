@@ -1,6 +1,8 @@
 // A device link's output shared by processes of one node: whole messages in the order asked,
 // and a killed process gives its turn up.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/emulator/links/link_frame_store.hpp"
 #include "marsokhod/emulator/links/shared_output.hpp"
 
@@ -13,7 +15,7 @@
 namespace marsokhod::emulator {
 namespace {
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 std::vector<std::byte> upload_of(char tag, std::size_t payload) {
   std::vector<std::byte> message{FrameStore::kUploadRequest};

@@ -10,10 +10,10 @@
 namespace marsokhod::emulator {
 namespace {
 
-constexpr Address kExternal = 0x80001000U;
+constexpr Address kUpsetExternal = 0x80001000U;
 constexpr Address kOnChip = 0x80000100U;
 
-MemoryConfig small_node() {
+MemoryConfig upset_node() {
   return MemoryConfig{4096, 4096, 0x70};
 }
 
@@ -22,55 +22,55 @@ std::byte byte_at(const MemoryArena& arena, Address address) {
 }
 
 TEST(MemoryUpsets, UnprotectedUpsetInvertsExactlyThatBit) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
-  *arena.pointer(kExternal + 5) = std::byte{0x0F};
-  EXPECT_EQ(upsets.upset(kExternal + 5, 7), UpsetEffect::flipped);
-  EXPECT_EQ(byte_at(arena, kExternal + 5), std::byte{0x8F});
-  EXPECT_EQ(byte_at(arena, kExternal + 4), std::byte{0});
-  EXPECT_EQ(byte_at(arena, kExternal + 6), std::byte{0});
+  *arena.pointer(kUpsetExternal + 5) = std::byte{0x0F};
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 5, 7), UpsetEffect::flipped);
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 5), std::byte{0x8F});
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 4), std::byte{0});
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 6), std::byte{0});
 }
 
 TEST(MemoryUpsets, EdacCorrectsASingleErrorSoTheProgramReadsTheWordUnchanged) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
   upsets.set_edac_on_external(true);
-  *arena.pointer(kExternal + 9) = std::byte{0x42};
-  EXPECT_EQ(upsets.upset(kExternal + 9, 1), UpsetEffect::corrected);
-  EXPECT_EQ(byte_at(arena, kExternal + 9), std::byte{0x42});
+  *arena.pointer(kUpsetExternal + 9) = std::byte{0x42};
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 9, 1), UpsetEffect::corrected);
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 9), std::byte{0x42});
   EXPECT_EQ(upsets.latent_words(), 1U);
 }
 
 TEST(MemoryUpsets, SecondErrorInOneWordIsUncorrectableAndReachesTheProgram) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
   upsets.set_edac_on_external(true);
   // Bytes 8 and 11 share the word at +8; the second error is beyond a SEC-DED code.
-  EXPECT_EQ(upsets.upset(kExternal + 8, 0), UpsetEffect::corrected);
-  EXPECT_EQ(upsets.upset(kExternal + 11, 3), UpsetEffect::uncorrectable);
-  EXPECT_EQ(byte_at(arena, kExternal + 11), std::byte{0x08});
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 8, 0), UpsetEffect::corrected);
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 11, 3), UpsetEffect::uncorrectable);
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 11), std::byte{0x08});
 }
 
 TEST(MemoryUpsets, ErrorsInDifferentWordsAreEachCorrected) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
   upsets.set_edac_on_external(true);
-  EXPECT_EQ(upsets.upset(kExternal + 3, 0), UpsetEffect::corrected);
-  EXPECT_EQ(upsets.upset(kExternal + 4, 0), UpsetEffect::corrected);
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 3, 0), UpsetEffect::corrected);
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 4, 0), UpsetEffect::corrected);
   EXPECT_EQ(upsets.latent_words(), 2U);
 }
 
 TEST(MemoryUpsets, ACheckBitErrorCountsAsTheWordsOneError) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
   upsets.set_edac_on_external(true);
-  EXPECT_EQ(upsets.upset_check_bit(kExternal + 16, 6), UpsetEffect::corrected);
-  EXPECT_EQ(upsets.upset(kExternal + 17, 2), UpsetEffect::uncorrectable);
-  EXPECT_THROW(upsets.upset_check_bit(kExternal, kEdacCheckBits), std::out_of_range);
+  EXPECT_EQ(upsets.upset_check_bit(kUpsetExternal + 16, 6), UpsetEffect::corrected);
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 17, 2), UpsetEffect::uncorrectable);
+  EXPECT_THROW(upsets.upset_check_bit(kUpsetExternal, kEdacCheckBits), std::out_of_range);
 }
 
 TEST(MemoryUpsets, OnChipMemoryHasNoEdac) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
   upsets.set_edac_on_external(true);
   EXPECT_FALSE(upsets.protects(kOnChip));
@@ -80,53 +80,53 @@ TEST(MemoryUpsets, OnChipMemoryHasNoEdac) {
 }
 
 TEST(MemoryUpsets, ScrubClearsTheSingleErrorsOfItsRangeOnly) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
   upsets.set_edac_on_external(true);
-  upsets.upset(kExternal + 0, 0);
-  upsets.upset(kExternal + 2048, 0);
-  EXPECT_EQ(upsets.scrub(kExternal, 1024), 1U);
+  upsets.upset(kUpsetExternal + 0, 0);
+  upsets.upset(kUpsetExternal + 2048, 0);
+  EXPECT_EQ(upsets.scrub(kUpsetExternal, 1024), 1U);
   EXPECT_EQ(upsets.latent_words(), 1U);
   // The scrubbed word takes a new upset as its only error again.
-  EXPECT_EQ(upsets.upset(kExternal + 1, 0), UpsetEffect::corrected);
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 1, 0), UpsetEffect::corrected);
   EXPECT_EQ(upsets.scrubbed(), 1U);
 }
 
 TEST(MemoryUpsets, StuckBitIsForcedBackAfterEachWrite) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
-  upsets.stick(kExternal + 1, 4, true);
-  EXPECT_EQ(byte_at(arena, kExternal + 1), std::byte{0x10});
+  upsets.stick(kUpsetExternal + 1, 4, true);
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 1), std::byte{0x10});
   EXPECT_TRUE(upsets.has_stuck());
-  *arena.pointer(kExternal + 1) = std::byte{0x01};
+  *arena.pointer(kUpsetExternal + 1) = std::byte{0x01};
   upsets.reassert_stuck();
-  EXPECT_EQ(byte_at(arena, kExternal + 1), std::byte{0x11});
-  upsets.stick(kExternal + 2, 0, false);
-  *arena.pointer(kExternal + 2) = std::byte{0xFF};
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 1), std::byte{0x11});
+  upsets.stick(kUpsetExternal + 2, 0, false);
+  *arena.pointer(kUpsetExternal + 2) = std::byte{0xFF};
   upsets.reassert_stuck();
-  EXPECT_EQ(byte_at(arena, kExternal + 2), std::byte{0xFE});
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 2), std::byte{0xFE});
 }
 
 TEST(MemoryUpsets, UnderEdacAStuckBitIsAPermanentErrorNoScrubClears) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
   upsets.set_edac_on_external(true);
-  EXPECT_EQ(upsets.stick(kExternal + 20, 1, true), UpsetEffect::corrected);
-  EXPECT_EQ(byte_at(arena, kExternal + 20), std::byte{0});
-  EXPECT_EQ(upsets.scrub(kExternal, 4096), 0U);
-  EXPECT_EQ(upsets.upset(kExternal + 21, 0), UpsetEffect::uncorrectable);
+  EXPECT_EQ(upsets.stick(kUpsetExternal + 20, 1, true), UpsetEffect::corrected);
+  EXPECT_EQ(byte_at(arena, kUpsetExternal + 20), std::byte{0});
+  EXPECT_EQ(upsets.scrub(kUpsetExternal, 4096), 0U);
+  EXPECT_EQ(upsets.upset(kUpsetExternal + 21, 0), UpsetEffect::uncorrectable);
 }
 
 TEST(MemoryUpsets, AddressesOutsideMemoryAndBitsAboveSevenAreRefused) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   MemoryUpsets upsets(arena);
-  EXPECT_THROW(upsets.upset(kExternal + 4096, 0), std::out_of_range);
-  EXPECT_THROW(upsets.upset(kExternal, 8), std::out_of_range);
-  EXPECT_THROW(upsets.stick(kExternal + 4096, 0, true), std::out_of_range);
+  EXPECT_THROW(upsets.upset(kUpsetExternal + 4096, 0), std::out_of_range);
+  EXPECT_THROW(upsets.upset(kUpsetExternal, 8), std::out_of_range);
+  EXPECT_THROW(upsets.stick(kUpsetExternal + 4096, 0, true), std::out_of_range);
 }
 
 TEST(MemoryBlocks, BlockAtNamesOwnerLabelAndKindUntilTheBlockIsFreed) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   arena.set_label("matching", "cost rows, 3 rows x 128 px x 2 B");
   const Address data = arena.allocate_block(100, 4, Placement::external, "matching");
   const Address workspace = arena.reserve_workspace("refine", 64);
@@ -149,7 +149,7 @@ TEST(MemoryBlocks, BlockAtNamesOwnerLabelAndKindUntilTheBlockIsFreed) {
 }
 
 TEST(MemoryBlocks, BlockListenerSeesEachAllocationAndFree) {
-  MemoryArena arena(small_node());
+  MemoryArena arena(upset_node());
   std::vector<std::tuple<Address, std::size_t, bool>> seen;
   arena.set_block_listener([&seen](Address start, std::size_t bytes, bool allocated) {
     seen.emplace_back(start, bytes, allocated);

@@ -1,6 +1,8 @@
 // The platform's [overswitch] table: the onboard timings as shipped, and every wrong key,
 // type or value refused naming the file, the line and the key.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/emulator/platform/platform.hpp"
 
 #include <gtest/gtest.h>
@@ -13,7 +15,7 @@
 namespace marsokhod::emulator {
 namespace {
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 /// onboard.toml up to its [overswitch] table, naming the shipped processor file by its path.
 std::string onboard_without_overswitch() {

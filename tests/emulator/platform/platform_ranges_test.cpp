@@ -1,6 +1,8 @@
 // Every number of a platform or processor file is held to its range before it is narrowed or
 // converted to ticks: the examples that used to wrap, and the rule over every integer key.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/emulator/links/link_framing.hpp"
 #include "marsokhod/emulator/node/node.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
@@ -22,21 +24,11 @@ namespace {
 
 namespace limits = platform_limits;
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 std::string read(const std::filesystem::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// Named for the test as well: ctest runs the tests of this file in parallel processes, which
-// must not write each other's files.
-std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  const std::string test = testing::UnitTest::GetInstance()->current_test_info()->name();
-  const std::filesystem::path path =
-      std::filesystem::path(testing::TempDir()) / (test + "-" + name);
-  std::ofstream(path) << text;
-  return path;
 }
 
 /// A valid platform using every optional key, on the processor file `processor`.
@@ -165,7 +157,8 @@ void expect_out_of_range(const std::filesystem::path& platform, const std::strin
 
 TEST(PlatformRanges, TheTestPlatformsAreValid) {
   const auto processor = kPlatforms / "processors" / "t805.toml";
-  const PlatformSpec spec = load_platform(write_file("full.toml", full_platform(processor)));
+  const PlatformSpec spec =
+      load_platform(test_support::write_test_file("full.toml", full_platform(processor)));
   EXPECT_EQ(spec.nodes.at(0).cpu.costs.wait_states, 2);
   EXPECT_EQ(spec.wires.at(0).speed_mbps, 20);
   EXPECT_EQ(spec.devices.at(0).image_height, 96);
@@ -182,8 +175,10 @@ TEST(PlatformRanges, EveryIntegerOfTheProcessorFileIsCheckedBeforeItIsNarrowed) 
   for (const auto& value : wrapping_values()) {
     for (const Mutation& mutation : mutations(processor, value)) {
       SCOPED_TRACE(mutation.key + " on line " + std::to_string(mutation.line));
-      const auto processor_path = write_file("ranges-processor.toml", mutation.text);
-      const auto platform = write_file("ranges-uses-processor.toml", full_platform(processor_path));
+      const auto processor_path =
+          test_support::write_test_file("ranges-processor.toml", mutation.text);
+      const auto platform = test_support::write_test_file("ranges-uses-processor.toml",
+                                                          full_platform(processor_path));
       expect_out_of_range(platform, processor_path.string(), mutation);
     }
   }
@@ -194,7 +189,7 @@ TEST(PlatformRanges, EveryIntegerOfThePlatformFileIsCheckedBeforeItIsNarrowed) {
   for (const auto& value : wrapping_values()) {
     for (const Mutation& mutation : mutations(text, value)) {
       SCOPED_TRACE(mutation.key + " on line " + std::to_string(mutation.line));
-      const auto path = write_file("ranges-platform.toml", mutation.text);
+      const auto path = test_support::write_test_file("ranges-platform.toml", mutation.text);
       expect_out_of_range(path, path.string(), mutation);
     }
   }
@@ -212,9 +207,10 @@ std::string with_line(std::string text, const std::string& prefix, const std::st
 PlatformError processor_error(const std::string& prefix, const std::string& replacement) {
   const std::string processor =
       with_line(read(kPlatforms / "processors" / "t805.toml"), prefix, replacement);
-  const auto processor_path = write_file("example-processor.toml", processor);
+  const auto processor_path = test_support::write_test_file("example-processor.toml", processor);
   try {
-    load_platform(write_file("example-platform.toml", full_platform(processor_path)));
+    load_platform(
+        test_support::write_test_file("example-platform.toml", full_platform(processor_path)));
   } catch (const PlatformError& error) {
     EXPECT_EQ(error.file(), processor_path.string());
     return error;
@@ -235,7 +231,7 @@ TEST(PlatformRanges, CostTableBaseOfTwoToThe31IsRefusedNotNegative) {
 TEST(PlatformRanges, WaitStatesAtTwoToThe32IsRefusedNotZero) {
   std::string text = full_platform(kPlatforms / "processors" / "t805.toml");
   text = with_line(text, "wait_states = 2", "wait_states = 4294967296");
-  const auto path = write_file("wait.toml", text);
+  const auto path = test_support::write_test_file("wait.toml", text);
   try {
     load_platform(path);
     FAIL() << "wait_states = 2^32 accepted";
@@ -250,7 +246,8 @@ TEST(PlatformRanges, WireSpeedThatWouldWrapToAT805SpeedIsRefused) {
   // 2^32 + 10 narrowed to an int is 10, a T805 speed.
   std::string text = full_platform(kPlatforms / "processors" / "t805.toml");
   text = with_line(text, "speed_mbps = 20", "speed_mbps = 4294967306");
-  EXPECT_THROW(load_platform(write_file("wire-speed.toml", text)), PlatformError);
+  EXPECT_THROW(load_platform(test_support::write_test_file("wire-speed.toml", text)),
+               PlatformError);
 }
 
 TEST(PlatformRanges, ProcessorCountsThatWouldWrapAreRefused) {
@@ -308,11 +305,12 @@ std::string slowest_processor() {
 }
 
 TEST(PlatformRanges, TheLargestTimesConvertToTicksWithoutOverflow) {
-  const auto processor = write_file("slowest-processor.toml", slowest_processor());
+  const auto processor =
+      test_support::write_test_file("slowest-processor.toml", slowest_processor());
   std::string text = full_platform(processor);
   text = with_line(text, "wait_states = 2", "wait_states = 64");
   text = with_line(text, "speed_mbps = 20", "speed_mbps = 1");
-  const PlatformSpec spec = load_platform(write_file("slowest.toml", text));
+  const PlatformSpec spec = load_platform(test_support::write_test_file("slowest.toml", text));
   const NodeSpec& node = spec.nodes.at(0);
   EXPECT_EQ(node.cpu.cycle, 1'000'000);
   EXPECT_EQ(node.cpu.timeslice, 1'000'000'000'000);
@@ -345,7 +343,8 @@ TEST(PlatformRanges, AbsurdDeviceSizesAreRefused) {
   };
   for (const auto& [line, replacement] : cases) {
     SCOPED_TRACE(replacement);
-    const auto path = write_file("device.toml", with_line(text, line, replacement));
+    const auto path =
+        test_support::write_test_file("device.toml", with_line(text, line, replacement));
     try {
       load_platform(path);
       ADD_FAILURE() << "accepted";
@@ -360,7 +359,7 @@ TEST(PlatformRanges, MoreNodesThanTheLimitAreRefused) {
   for (std::size_t i = 0; i < limits::kMaxNodes; ++i)
     text += "\n[[node]]\nname = \"n" + std::to_string(i) +
             "\"\nspeed_grade = \"T805-30\"\nexternal_kb = 1\n";
-  const auto path = write_file("many.toml", text);
+  const auto path = test_support::write_test_file("many.toml", text);
   try {
     load_platform(path);
     FAIL() << "accepted " << limits::kMaxNodes + 2 << " nodes";
@@ -375,8 +374,8 @@ TEST(PlatformRanges, NamesAreShortAndPlain) {
   for (const std::string& name : {std::string("a b"), std::string("a.b"), std::string("a\\u0007"),
                                   std::string(""), std::string(65, 'x')}) {
     SCOPED_TRACE(name);
-    const auto path =
-        write_file("name.toml", with_line(text, "name = \"b\"", "name = \"" + name + "\""));
+    const auto path = test_support::write_test_file(
+        "name.toml", with_line(text, "name = \"b\"", "name = \"" + name + "\""));
     try {
       load_platform(path);
       ADD_FAILURE() << "accepted";

@@ -1,5 +1,7 @@
 // Platform and processor files: what they describe and every error they can hold.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/emulator/platform/platform.hpp"
 
 #include <gtest/gtest.h>
@@ -14,7 +16,7 @@
 namespace marsokhod::emulator {
 namespace {
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 /// A small valid platform; each test breaks one thing in it.
 std::string base_platform() {
@@ -41,12 +43,6 @@ std::string base_platform() {
          "b = \"b.link3\"\n";
 }
 
-std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / name;
-  std::ofstream(path) << text;
-  return path;
-}
-
 /// 1-based line of the first line containing `marker`, counted here independently.
 int line_of(const std::string& text, const std::string& marker) {
   const auto at = text.find(marker);
@@ -59,7 +55,7 @@ int line_of(const std::string& text, const std::string& marker) {
 
 /// Loads `text` and returns the error it must raise.
 PlatformError expect_error(const std::string& name, const std::string& text) {
-  const auto path = write_file(name, text);
+  const auto path = test_support::write_test_file(name, text);
   try {
     load_platform(path);
   } catch (const PlatformError& error) {
@@ -130,7 +126,8 @@ TEST(Platform, ProcessorFileCarriesTheDataBookTable) {
 }
 
 TEST(Platform, BasePlatformOfTheTestsIsValid) {
-  const PlatformSpec spec = load_platform(write_file("base.toml", base_platform()));
+  const PlatformSpec spec =
+      load_platform(test_support::write_test_file("base.toml", base_platform()));
   EXPECT_EQ(spec.nodes.size(), 2U);
   EXPECT_EQ(spec.nodes[1].cpu.cycle, 50'000);
   EXPECT_FALSE(spec.nodes[1].powered);
@@ -323,7 +320,7 @@ TEST(Platform, UnreadableProcessorFileIsAProcessorFileErrorAtTheProcessorKey) {
     SCOPED_TRACE(files[i].string());
     std::string text = base_platform();
     text.replace(text.find(original), original.size(), files[i].string());
-    const auto path = write_file("unreadable-processor.toml", text);
+    const auto path = test_support::write_test_file("unreadable-processor.toml", text);
     const PlatformError error = load_error(path);
     EXPECT_EQ(error.file(), path.string());
     EXPECT_EQ(error.key(), "processor");
@@ -338,11 +335,12 @@ TEST(Platform, ProcessorFileErrorsSayProcessorFile) {
   std::ifstream in(kPlatforms / "processors" / "t805.toml");
   std::string processor((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   processor.replace(processor.find("[speed_grades]"), 14, "[speed_grades");
-  const auto processor_path = write_file("syntax-processor.toml", processor);
+  const auto processor_path = test_support::write_test_file("syntax-processor.toml", processor);
   std::string text = base_platform();
   const std::string original = (kPlatforms / "processors" / "t805.toml").string();
   text.replace(text.find(original), original.size(), processor_path.string());
-  const PlatformError error = load_error(write_file("uses-syntax-processor.toml", text));
+  const PlatformError error =
+      load_error(test_support::write_test_file("uses-syntax-processor.toml", text));
   EXPECT_EQ(error.file(), processor_path.string());
   EXPECT_EQ(error.line(), line_of(processor, "[speed_grades"));
   expect_in(error, "TOML syntax error");
@@ -352,11 +350,11 @@ TEST(Platform, UnknownInstructionInTheCostTableIsAnError) {
   std::ifstream in(kPlatforms / "processors" / "t805.toml");
   std::string processor((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   processor += "frobnicate = 3\n";
-  const auto processor_path = write_file("bad-processor.toml", processor);
+  const auto processor_path = test_support::write_test_file("bad-processor.toml", processor);
   std::string text = base_platform();
   const std::string original = (kPlatforms / "processors" / "t805.toml").string();
   text.replace(text.find(original), original.size(), processor_path.string());
-  const auto path = write_file("uses-bad-processor.toml", text);
+  const auto path = test_support::write_test_file("uses-bad-processor.toml", text);
   try {
     load_platform(path);
     FAIL() << "expected an error";

@@ -121,7 +121,7 @@ TEST(ImageFile, ADeviceOrAFifoIsRefusedWithoutBlocking) {
   expect_image_error([&] { (void)read_image(fifo); }, fifo.string(), {"not a regular file"});
 }
 
-std::uint32_t crc32(const std::string& bytes) {
+std::uint32_t png_crc(const std::string& bytes) {
   std::uint32_t crc = 0xffffffffU;
   for (const char c : bytes) {
     crc ^= static_cast<std::uint8_t>(c);
@@ -147,7 +147,7 @@ TEST(ImageFile, APngFeedsLibpngNoMoreThanItsImageCanNeed) {
   const std::string ihdr_body = std::string("IHDR") + big_endian(1) + big_endian(1) +
                                 std::string{'\x08', '\x00', '\x00', '\x00', '\x00'};
   std::string head = "\x89PNG\r\n\x1a\n";
-  head += big_endian(13) + ihdr_body + big_endian(crc32(ihdr_body));
+  head += big_endian(13) + ihdr_body + big_endian(png_crc(ihdr_body));
   head += big_endian(static_cast<std::uint32_t>(32 * kMiB)) + "zzZz";
   testing::write_bytes(path, Bytes(head.begin(), head.end()));
   ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(head.size() + 33 * kMiB)), 0);

@@ -17,7 +17,7 @@ using testing::bytes_of;
 using testing::expect_decode_error;
 
 template <class T>
-const Image<T>& as(const AnyImage& image) {
+const Image<T>& pnm_as(const AnyImage& image) {
   EXPECT_TRUE(std::holds_alternative<Image<T>>(image));
   return std::get<Image<T>>(image);
 }
@@ -25,7 +25,7 @@ const Image<T>& as(const AnyImage& image) {
 TEST(PnmDecode, Reads8BitGreyRowByRow) {
   const AnyImage decoded =
       decode_image(bytes_of("P5\n3 2\n255\n", {0, 1, 2, 253, 254, 255}), "a.pgm");
-  const auto& image = as<std::uint8_t>(decoded);
+  const auto& image = pnm_as<std::uint8_t>(decoded);
   ASSERT_EQ(image.width(), 3);
   ASSERT_EQ(image.height(), 2);
   ASSERT_EQ(image.channels(), 1);
@@ -37,7 +37,7 @@ TEST(PnmDecode, Reads8BitGreyRowByRow) {
 TEST(PnmDecode, Reads8BitRgbInterleaved) {
   const AnyImage decoded =
       decode_image(bytes_of("P6 2 1 255\n", {10, 20, 30, 40, 50, 60}), "a.ppm");
-  const auto& image = as<std::uint8_t>(decoded);
+  const auto& image = pnm_as<std::uint8_t>(decoded);
   ASSERT_EQ(image.channels(), 3);
   EXPECT_EQ(image(0, 0, 2), 30);
   EXPECT_EQ(image(1, 0, 0), 40);
@@ -47,7 +47,7 @@ TEST(PnmDecode, Reads8BitRgbInterleaved) {
 TEST(PnmDecode, Reads16BitSamplesMostSignificantByteFirst) {
   const AnyImage decoded =
       decode_image(bytes_of("P5 2 1 65535\n", {0x12, 0x34, 0xff, 0xfe}), "deep.pgm");
-  const auto& image = as<std::uint16_t>(decoded);
+  const auto& image = pnm_as<std::uint16_t>(decoded);
   EXPECT_EQ(image(0, 0), 0x1234);
   EXPECT_EQ(image(1, 0), 0xfffe);
 }
@@ -55,16 +55,16 @@ TEST(PnmDecode, Reads16BitSamplesMostSignificantByteFirst) {
 TEST(PnmDecode, MaxvalAbove255SelectsTwoByteSamples) {
   // maxval 255 means one byte per sample, 256 two bytes (netpbm specification).
   const AnyImage one = decode_image(bytes_of("P5 2 1 255\n", {1, 2}), "one.pgm");
-  EXPECT_EQ(as<std::uint8_t>(one)(1, 0), 2);
+  EXPECT_EQ(pnm_as<std::uint8_t>(one)(1, 0), 2);
   const AnyImage two = decode_image(bytes_of("P5 2 1 256\n", {0, 1, 1, 0}), "two.pgm");
-  EXPECT_EQ(as<std::uint16_t>(two)(0, 0), 1);
-  EXPECT_EQ(as<std::uint16_t>(two)(1, 0), 256);
+  EXPECT_EQ(pnm_as<std::uint16_t>(two)(0, 0), 1);
+  EXPECT_EQ(pnm_as<std::uint16_t>(two)(1, 0), 256);
 }
 
 TEST(PnmDecode, Reads16BitRgbWithSmallMaxval) {
   const AnyImage decoded =
       decode_image(bytes_of("P6 1 1 1023\n", {0x03, 0xff, 0x02, 0x00, 0x00, 0x01}), "rgb.ppm");
-  const auto& image = as<std::uint16_t>(decoded);
+  const auto& image = pnm_as<std::uint16_t>(decoded);
   EXPECT_EQ(image(0, 0, 0), 1023);
   EXPECT_EQ(image(0, 0, 1), 512);
   EXPECT_EQ(image(0, 0, 2), 1);
@@ -72,32 +72,32 @@ TEST(PnmDecode, Reads16BitRgbWithSmallMaxval) {
 
 TEST(PnmDecode, MaxvalOneIsValid) {
   const AnyImage decoded = decode_image(bytes_of("P5 2 1 1\n", {1, 0}), "bits.pgm");
-  EXPECT_EQ(as<std::uint8_t>(decoded)(0, 0), 1);
+  EXPECT_EQ(pnm_as<std::uint8_t>(decoded)(0, 0), 1);
 }
 
 TEST(PnmDecode, AnyHeaderWhitespaceSeparatesFields) {
   const AnyImage decoded = decode_image(bytes_of("P5\t2\r\n\v1\f 255\r", {7, 8}), "ws.pgm");
-  EXPECT_EQ(as<std::uint8_t>(decoded)(1, 0), 8);
+  EXPECT_EQ(pnm_as<std::uint8_t>(decoded)(1, 0), 8);
 }
 
 TEST(PnmDecode, TrailingBytesAfterTheRasterAreIgnored) {
   // A netpbm stream may hold several images one after another.
   const AnyImage decoded = decode_image(bytes_of("P5 1 1 255\n", {9, 'P', '5'}), "multi.pgm");
-  EXPECT_EQ(as<std::uint8_t>(decoded)(0, 0), 9);
+  EXPECT_EQ(pnm_as<std::uint8_t>(decoded)(0, 0), 9);
 }
 
 TEST(PnmComments, AcceptedBetweenEveryHeaderField) {
   const AnyImage decoded = decode_image(
       bytes_of("P5\n# made by hand\n2 # width\n# height next\n1\n#maxval\n255\n", {4, 5}),
       "comments.pgm");
-  const auto& image = as<std::uint8_t>(decoded);
+  const auto& image = pnm_as<std::uint8_t>(decoded);
   EXPECT_EQ(image.width(), 2);
   EXPECT_EQ(image(1, 0), 5);
 }
 
 TEST(PnmComments, EndedByCarriageReturn) {
   const AnyImage decoded = decode_image(bytes_of("P5 #note\r2 1 255\n", {1, 2}), "cr.pgm");
-  EXPECT_EQ(as<std::uint8_t>(decoded).width(), 2);
+  EXPECT_EQ(pnm_as<std::uint8_t>(decoded).width(), 2);
 }
 
 TEST(PnmComments, InsideANumberAreCutOutOfIt) {
@@ -106,20 +106,20 @@ TEST(PnmComments, InsideANumberAreCutOutOfIt) {
   Bytes bytes = bytes_of("P5 1#x\n2 1 255\n");
   bytes.resize(bytes.size() + 12, 3);
   const AnyImage decoded = decode_image(bytes, "split.pgm");
-  EXPECT_EQ(as<std::uint8_t>(decoded).width(), 12);
+  EXPECT_EQ(pnm_as<std::uint8_t>(decoded).width(), 12);
 }
 
 TEST(PnmComments, BeforeTheRasterNeedTheirOwnWhitespaceByte) {
   // "the newline at the end of the comment is not sufficient to delimit the raster"
   const AnyImage decoded = decode_image(bytes_of("P5 2 1 255#last\n\n", {'A', 'B'}), "ok.pgm");
-  EXPECT_EQ(as<std::uint8_t>(decoded)(0, 0), 'A');
+  EXPECT_EQ(pnm_as<std::uint8_t>(decoded)(0, 0), 'A');
   expect_decode_error(bytes_of("P5 2 1 255#last\n", {'A', 'B'}), "bad.pgm",
                       {"expected one whitespace byte after maxval", "'A'"});
 }
 
 TEST(PnmComments, HashAfterTheMaxvalWhitespaceIsPixelData) {
   const AnyImage decoded = decode_image(bytes_of("P5 2 1 255\n#c"), "hash.pgm");
-  const auto& image = as<std::uint8_t>(decoded);
+  const auto& image = pnm_as<std::uint8_t>(decoded);
   EXPECT_EQ(image(0, 0), '#');
   EXPECT_EQ(image(1, 0), 'c');
 }
@@ -230,7 +230,7 @@ TEST(PnmSharedData, MiddleburyPgmMatchesItsRawBytes) {
     GTEST_SKIP() << "shared data not found: " << path;
   const Bytes file = testing::read_bytes(path);
   const AnyImage decoded = read_image(path);
-  const auto& image = as<std::uint8_t>(decoded);
+  const auto& image = pnm_as<std::uint8_t>(decoded);
   ASSERT_EQ(image.width(), 384); // sizes from stereo/PAIRS.tsv
   ASSERT_EQ(image.height(), 288);
   // The header "P5\n384 288\n255\n" is 15 bytes; the raster is the rest of the file.

@@ -1,5 +1,7 @@
 // Tests: the stereo rig's geometry against the paper's figures and hand calculations.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/rig/rig_geometry.hpp"
 
@@ -16,7 +18,7 @@
 namespace marsokhod::imaging {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test_support::kPi;
 constexpr double kHeight = 1.0;
 constexpr double kBaseline = 0.5;
 constexpr double kPitchDownDeg = 10.0;

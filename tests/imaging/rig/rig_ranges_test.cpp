@@ -2,7 +2,10 @@
 
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/rig/rig_geometry.hpp"
+#include "marsokhod/io/formats/toml_float.hpp"
+#include "marsokhod/io/numbers/checked_number.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -195,7 +198,7 @@ TEST(RigRanges, CamerasLookingAwayFromTheGroundAheadAreRefusedWithTheReason) {
   }
 }
 
-fs::path write_rig_file(const std::string& name, const std::string& text) {
+fs::path write_ranges_rig(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / "marsokhod-rig-ranges-test";
   fs::create_directories(dir);
   const fs::path path = dir / (name + ".toml");
@@ -203,34 +206,80 @@ fs::path write_rig_file(const std::string& name, const std::string& text) {
   return path;
 }
 
-std::string load_error(const fs::path& path) {
+std::string ranges_load_error(const fs::path& path) {
   try {
     StereoRig::load(path);
-  } catch (const RigError& error) {
+  } catch (const RigFileError& error) {
     return error.what();
   }
   return "";
 }
 
+// A value as a rig file spells it: an integer for the sizes, the shortest float otherwise.
+std::string file_value(const DocumentedRange& range, double value) {
+  if (is_integer_key(range))
+    return std::to_string(static_cast<long long>(value));
+  return io::toml_float(value);
+}
+
+std::string rig_file_text(const DocumentedRange& range, const std::string& value) {
+  const bool misalignment = std::string(range.key).ends_with("_arcsec");
+  return fmt::format("{}\n{} = {}\n", misalignment ? "[rig.right_misalignment]" : "[rig]",
+                     range.key, value);
+}
+
+// The file reader applies the constructor's ranges: the ends are read (or the rig is refused
+// only because its cameras do not see the ground), and a finite value just outside is refused
+// at its line and key in io::TomlTable's words.
+TEST(RigRanges, RigFilesHaveTheDocumentedRanges) {
+  for (const DocumentedRange& range : documented_ranges()) {
+    const bool misalignment = std::string(range.key).ends_with("_arcsec");
+    const std::string key =
+        std::string(misalignment ? "rig.right_misalignment." : "rig.") + range.key;
+    for (const double value : legal_values(range)) {
+      const fs::path path =
+          write_ranges_rig("legal", rig_file_text(range, file_value(range, value)));
+      const std::string message = ranges_load_error(path);
+      EXPECT_TRUE(message.empty() || message.find("do not see the ground") != std::string::npos)
+          << key << " = " << value << ": " << message;
+    }
+    for (const double value : illegal_values(range)) {
+      if (!std::isfinite(value) || (is_integer_key(range) && std::abs(value) > 1e9))
+        continue;
+      const fs::path path =
+          write_ranges_rig("illegal", rig_file_text(range, file_value(range, value)));
+      const std::string message = ranges_load_error(path);
+      EXPECT_EQ(
+          message.rfind(fmt::format("{}:2: '{}': {} is out of range: it must be {}", path.string(),
+                                    key, value, io::range_text(range.low, range.high)),
+                        0),
+          0U)
+          << message;
+    }
+  }
+}
+
 // The examples: each is now an error naming the file (and the key where one is to
 // blame) instead of an internal message halfway through the output or -nan.
 TEST(RigRanges, TheReportedRigFilesAreRefusedNamingTheFile) {
-  const fs::path up = write_rig_file("up", "[rig]\npitch_down_deg = -89\n");
-  const std::string up_message = load_error(up);
-  EXPECT_EQ(up_message.rfind(up.string() + ": ", 0), 0U) << up_message;
-  EXPECT_NE(up_message.find("do not see the ground"), std::string::npos) << up_message;
+  // Each value is in range; the rig as a whole is refused at its [rig] table.
+  const fs::path up = write_ranges_rig("up", "[rig]\npitch_down_deg = -89\n");
+  EXPECT_EQ(ranges_load_error(up),
+            up.string() + ":1: the cameras do not see the ground ahead at this pitch and mast "
+                          "position: the paper's 30 cm stone 14 m ahead of the rover centre would "
+                          "be behind the left camera (rig.pitch_down_deg = -89, rig.mast_height_m "
+                          "= 1, rig.mast_forward_m = 0)");
 
-  const fs::path far = write_rig_file("far", "[rig]\nmast_forward_m = 1e6\n");
-  const std::string far_message = load_error(far);
-  EXPECT_EQ(far_message.rfind(far.string() + ":2:", 0), 0U) << far_message;
-  EXPECT_NE(far_message.find("rig.mast_forward_m"), std::string::npos) << far_message;
+  const fs::path far = write_ranges_rig("far", "[rig]\nmast_forward_m = 1e6\n");
+  EXPECT_EQ(
+      ranges_load_error(far),
+      far.string() +
+          ":2: 'rig.mast_forward_m': 1000000 is out of range: it must be between -100 and 100");
 
-  const fs::path wide = write_rig_file("wide", "[rig]\nbaseline_m = 1e308\n");
-  const std::string wide_message = load_error(wide);
-  EXPECT_EQ(wide_message.rfind(wide.string() + ":2:", 0), 0U) << wide_message;
-  EXPECT_NE(wide_message.find("key 'rig.baseline_m' must be between 0.001 and 100"),
-            std::string::npos)
-      << wide_message;
+  const fs::path wide = write_ranges_rig("wide", "[rig]\nbaseline_m = 1e308\n");
+  EXPECT_EQ(ranges_load_error(wide),
+            wide.string() +
+                ":2: 'rig.baseline_m': 1e+308 is out of range: it must be between 0.001 and 100");
 }
 
 } // namespace

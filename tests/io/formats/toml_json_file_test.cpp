@@ -23,7 +23,7 @@ fs::path write_temp(const std::string& name, const std::string& text) {
 }
 
 template <class Parse>
-std::string error_of(Parse parse) {
+std::string json_error_of(Parse parse) {
   try {
     parse();
   } catch (const InputError& error) {
@@ -40,14 +40,14 @@ TEST(TomlFile, ParsesAValidFile) {
 
 TEST(TomlFile, SyntaxErrorNamesFileLineAndText) {
   const fs::path path = write_temp("bad.toml", "[a]\nb = = 2\n");
-  const std::string message = error_of([&] { parse_toml_file(path, "test file"); });
+  const std::string message = json_error_of([&] { parse_toml_file(path, "test file"); });
   EXPECT_EQ(message.rfind(path.string() + ":2: TOML syntax error", 0), 0U) << message;
   EXPECT_NE(message.find("\"b = = 2\""), std::string::npos) << message;
   fs::remove(path);
 }
 
 TEST(TomlFile, DeviceIsRefusedBeforeParsing) {
-  EXPECT_NE(error_of([] { parse_toml_file("/dev/zero", "test file"); }).find("is a device"),
+  EXPECT_NE(json_error_of([] { parse_toml_file("/dev/zero", "test file"); }).find("is a device"),
             std::string::npos);
 }
 
@@ -59,7 +59,7 @@ TEST(JsonFile, ParsesAValidFile) {
 
 TEST(JsonFile, SyntaxErrorNamesTheFile) {
   const fs::path path = write_temp("bad.json", "{\"a\": }");
-  const std::string message = error_of([&] { parse_json_file(path, "test file"); });
+  const std::string message = json_error_of([&] { parse_json_file(path, "test file"); });
   EXPECT_EQ(message.rfind(path.string() + ": not a test file: parse error at line 1", 0), 0U)
       << message;
   EXPECT_EQ(message.find("json.exception"), std::string::npos) << message;
@@ -68,14 +68,14 @@ TEST(JsonFile, SyntaxErrorNamesTheFile) {
 
 TEST(JsonFile, NumberTooLargeForADoubleNamesTheFile) {
   const fs::path path = write_temp("huge.json", R"({"a": 1e999})");
-  const std::string message = error_of([&] { parse_json_file(path, "test file"); });
+  const std::string message = json_error_of([&] { parse_json_file(path, "test file"); });
   EXPECT_EQ(message.rfind(path.string() + ": not a test file", 0), 0U) << message;
   fs::remove(path);
 }
 
 TEST(JsonFile, DeepNestingIsRefusedBeforeParsing) {
   const fs::path path = write_temp("deep.json", std::string(100000, '['));
-  const std::string message = error_of([&] { parse_json_file(path, "test file"); });
+  const std::string message = json_error_of([&] { parse_json_file(path, "test file"); });
   EXPECT_NE(message.find("deeper than 64 levels"), std::string::npos) << message;
   fs::remove(path);
 }

@@ -1,9 +1,11 @@
 // Tests: the vertical parallax map, its removal, its calibration file and its calibration.
 
+#include "marsokhod/io/files/input_error.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax.hpp"
 #include "marsokhod/nav/calibration/vertical_parallax_calibration.hpp"
 #include "marsokhod/nav/work/work.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -109,10 +111,14 @@ fs::path write_file(const std::string& name, const std::string& text) {
   return path;
 }
 
+// The message of a file's refusal: a CalibrationFileError for what it holds, an io::InputError
+// for a file that cannot be read or is not TOML.
 std::string load_error(const fs::path& path) {
   try {
     static_cast<void>(load_vertical_parallax(path));
-  } catch (const CalibrationError& error) {
+  } catch (const CalibrationFileError& error) {
+    return error.what();
+  } catch (const io::InputError& error) {
     return error.what();
   }
   return "no error";
@@ -136,6 +142,35 @@ TEST(CalibrationFile, ReadsBackExactlyWhatItWrote) {
   EXPECT_EQ(load_vertical_parallax(write_file("hand.toml", kGoodTable)).coefficients[0], 1.5);
 }
 
+TEST(CalibrationFile, WritesEveryCoefficientAsAShortestTomlFloat) {
+  const VerticalParallaxMap map{128, 96, {2.0, 0.1 + 0.2, -1e-7, 0.0, 5e-324, -64.0}};
+  EXPECT_EQ(vertical_parallax_to_toml(map, "fitted"),
+            "# Vertical parallax calibration (format: docs/navigation.md, \"Calibration file\").\n"
+            "# fitted\n"
+            "[vertical_parallax]\nwidth_px = 128\nheight_px = 96\n"
+            "# shift(x, y) = c0 + cx u + cy v + cxx u^2 + cxy u v + cyy v^2 rows (right image "
+            "content lower),\n# u = x - (width_px - 1) / 2, v = y - (height_px - 1) / 2\n"
+            "c0 = 2.0\ncx = 0.30000000000000004\ncy = -1e-07\ncxx = 0.0\ncxy = 5e-324\n"
+            "cyy = -64.0\n");
+}
+
+// The same form as every keyed file (a platform file, a campaign file): file, line, key, and
+// io::TomlTable's words for a range.
+TEST(CalibrationFile, AValueOutOfRangeReadsLikeEveryKeyedFile) {
+  const fs::path path = write_file("big_c0.toml", replaced(kGoodTable, "c0 = 1.5", "c0 = 2e6"));
+  try {
+    static_cast<void>(load_vertical_parallax(path));
+    ADD_FAILURE() << "accepted c0 = 2e6";
+  } catch (const CalibrationFileError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              path.string() + ":4: 'vertical_parallax.c0': 2000000 is out of range: it must be "
+                              "between -1000000 and 1000000");
+    EXPECT_EQ(error.line(), 4);
+    EXPECT_EQ(error.key(), "vertical_parallax.c0");
+  }
+  EXPECT_THROW(static_cast<void>(load_vertical_parallax(path)), io::KeyedFileError);
+}
+
 TEST(CalibrationFile, AMissingFileIsNamed) {
   const fs::path path = fs::temp_directory_path() / "marsokhod-parallax-tests" / "absent.toml";
   EXPECT_EQ(load_error(path).rfind(path.string() + ": cannot open the calibration file", 0), 0U)
@@ -156,7 +191,8 @@ TEST(CalibrationFile, CoefficientsThatCouldCancelToNanAreRefusedByName) {
   const std::string text =
       replaced(replaced(square, "cxx = 0.0", "cxx = 1e300"), "cyy = 3e-5", "cyy = -1e300");
   const std::string message = load_error(write_file("cancelling.toml", text));
-  EXPECT_NE(message.find("key 'vertical_parallax.cxx' must be between -1000000 and 1000000"),
+  EXPECT_NE(message.find(":7: 'vertical_parallax.cxx': 1e+300 is out of range: it must be "
+                         "between -1000000 and 1000000"),
             std::string::npos)
       << message;
 }
@@ -175,7 +211,8 @@ TEST(CalibrationFile, EveryCoefficientIsBoundedAndTheLargestLegalMapStaysFinite)
     EXPECT_NE(load_error(write_file("limit.toml", at_limit)).find("more than the 64"),
               std::string::npos)
         << key;
-    EXPECT_NE(load_error(write_file("beyond.toml", beyond)).find("must be between"),
+    EXPECT_NE(load_error(write_file("beyond.toml", beyond))
+                  .find(fmt::format("'vertical_parallax.{}': 1000001 is out of range", key)),
               std::string::npos)
         << key;
   }
@@ -186,40 +223,52 @@ TEST(CalibrationFile, EveryCoefficientIsBoundedAndTheLargestLegalMapStaysFinite)
 struct BadFile {
   const char* name;
   std::string text;
+  const char* place; ///< after the file: ":LINE: 'KEY': ", ":LINE: " or ": 'KEY': "
   const char* problem;
 };
 
 class CalibrationFileErrors : public ::testing::TestWithParam<BadFile> {};
 
-TEST_P(CalibrationFileErrors, NameTheFileAndTheProblem) {
+TEST_P(CalibrationFileErrors, NameTheFileTheLineAndTheKey) {
   const fs::path path = write_file(std::string(GetParam().name) + ".toml", GetParam().text);
   const std::string message = load_error(path);
-  EXPECT_EQ(message.rfind(path.string() + ":", 0), 0U) << message;
+  EXPECT_EQ(message.rfind(path.string() + GetParam().place, 0), 0U) << message;
   EXPECT_NE(message.find(GetParam().problem), std::string::npos) << message;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     VerticalParallax, CalibrationFileErrors,
     ::testing::Values(
-        BadFile{"syntax", "[vertical_parallax\n", "TOML syntax error"},
-        BadFile{"empty", "", "no [vertical_parallax] table"},
-        BadFile{"other_table", std::string("[rig]\n") + kGoodTable, "unknown key 'rig'"},
+        BadFile{"syntax", "[vertical_parallax\n", ":1: ", "TOML syntax error"},
+        BadFile{"empty", "", ": 'vertical_parallax': ", "missing [vertical_parallax] table"},
+        BadFile{"not_a_table", "vertical_parallax = 1\n",
+                ":1: 'vertical_parallax': ", "must be a table, not an integer"},
+        BadFile{"other_table", std::string("[rig]\n") + kGoodTable, ":1: 'rig': ",
+                "unknown key: a calibration file holds one [vertical_parallax] table"},
         BadFile{"unknown_key", std::string(kGoodTable) + "c3 = 1.0\n",
-                "unknown key 'vertical_parallax.c3'"},
+                ":10: 'vertical_parallax.c3': ",
+                "unknown key (known keys: width_px, height_px, c0, cx, cy, cxx, cxy, cyy)"},
         BadFile{"missing", replaced(kGoodTable, "cyy = 3e-5\n", ""),
-                "'vertical_parallax.cyy' is "
-                "missing"},
-        BadFile{"string", replaced(kGoodTable, "c0 = 1.5", "c0 = \"1.5\""), "must be a number"},
-        BadFile{"nan", replaced(kGoodTable, "c0 = 1.5", "c0 = nan"), "must be finite"},
-        BadFile{"infinite", replaced(kGoodTable, "c0 = 1.5", "c0 = -inf"), "must be finite"},
+                ":1: 'vertical_parallax.cyy': ", "missing"},
+        BadFile{"string", replaced(kGoodTable, "c0 = 1.5", "c0 = \"1.5\""),
+                ":4: 'vertical_parallax.c0': ", "must be a finite number, not a string"},
+        BadFile{"nan", replaced(kGoodTable, "c0 = 1.5", "c0 = nan"),
+                ":4: 'vertical_parallax.c0': ", "must be a finite number, not nan"},
+        BadFile{"infinite", replaced(kGoodTable, "c0 = 1.5", "c0 = -inf"),
+                ":4: 'vertical_parallax.c0': ", "must be a finite number, not -inf"},
         // 2^32 + 128 would be 128 after a cast to 32 bits.
         BadFile{"wrapping_size", replaced(kGoodTable, "width_px = 128", "width_px = 4294967424"),
-                "must lie within 16..16384 (got 4294967424)"},
+                ":2: 'vertical_parallax.width_px': ",
+                "4294967424 is out of range: it must be between 16 and 16384"},
         BadFile{"float_size", replaced(kGoodTable, "width_px = 128", "width_px = 128.0"),
-                "must be an integer"},
+                ":2: 'vertical_parallax.width_px': ",
+                "must be an integer, not a floating-point number"},
         BadFile{"tiny", replaced(kGoodTable, "height_px = 96", "height_px = 2"),
-                "must lie within 16..16384"},
-        BadFile{"huge_shift", replaced(kGoodTable, "c0 = 1.5", "c0 = 80.0"), "more than the 64"}),
+                ":3: 'vertical_parallax.height_px': ",
+                "2 is out of range: it must be between 16 and 16384"},
+        // Each coefficient is in range; the map as a whole is refused at its table.
+        BadFile{"huge_shift", replaced(kGoodTable, "c0 = 1.5", "c0 = 80.0"),
+                ":1: ", "the map shifts rows by up to 80"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(CalibrationFile, AMapOfAnotherSizeIsRefusedNamingTheSource) {

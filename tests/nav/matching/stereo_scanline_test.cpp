@@ -1,5 +1,6 @@
 // The scan-line dynamic programme, the left-right check and the fill policy on hand-made lines.
 #include "nav/stereo_test_support.hpp"
+#include "support/test_files.hpp"
 
 #include "marsokhod/nav/matching/scanline_dp.hpp"
 #include "marsokhod/nav/stereo/consistency_check.hpp"
@@ -18,7 +19,7 @@
 namespace marsokhod::nav {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using test_support::kInf;
 
 // The step profile 3 (x < 20), 9 (20..39), 5 (x >= 40) over 60 pixels and 12 candidates.
 int step_profile(int x) {

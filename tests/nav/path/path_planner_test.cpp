@@ -2,6 +2,7 @@
 
 #include "nav/portable_random.hpp"
 #include "nav/terrain_grid.hpp"
+#include "support/test_files.hpp"
 
 #include "marsokhod/nav/path/path_planner.hpp"
 
@@ -24,7 +25,7 @@ using testing::grid_terrain;
 using testing::GridSpec;
 using testing::long_grid;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test_support::kInfinity;
 
 ZoneMap all_traversable(const TerrainPoints& t) {
   ZoneMap zones{imaging::Image<std::uint8_t>(t.width(), t.height(), 1, 0), {}};
@@ -64,7 +65,7 @@ double edge(const TerrainPoints& t, int xa, int ya, int xb, int yb, const EdgeWe
 std::vector<double> dijkstra(const TerrainPoints& t, const ZoneMap& zones, PixelPoint start,
                              const EdgeWeights& weights) {
   const int w = t.width();
-  std::vector<double> distance(static_cast<std::size_t>(w) * t.height(), kInf);
+  std::vector<double> distance(static_cast<std::size_t>(w) * t.height(), kInfinity);
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
   distance[start.y * w + start.x] = 0.0;

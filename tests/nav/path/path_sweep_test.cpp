@@ -2,6 +2,7 @@
 
 #include "nav/portable_random.hpp"
 #include "nav/terrain_grid.hpp"
+#include "support/test_files.hpp"
 
 #include "marsokhod/nav/path/path_planner.hpp"
 
@@ -21,7 +22,7 @@
 namespace marsokhod::nav {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using test_support::kInf;
 
 struct Plain {
   std::vector<float> cost;

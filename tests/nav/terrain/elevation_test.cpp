@@ -1,5 +1,7 @@
 // Tests: range and elevation from disparity, with the rover pitched, rolled and level.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/nav/terrain/elevation.hpp"
 
 #include <gtest/gtest.h>
@@ -17,10 +19,10 @@
 namespace marsokhod::nav {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test_support::kPi;
 constexpr double kHeight = 1.0;
 constexpr double kBaseline = 0.5;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test_support::kInfinity;
 
 double rad(double degrees) {
   return degrees * kPi / 180.0;
@@ -126,9 +128,9 @@ TEST(ReconstructTerrain, UnusableDisparitiesAreUnknownEverywhere) {
   const TerrainPoints terrain = reconstruct_terrain(disparity, rig, {});
   for (int u = 1; u <= 4; ++u) {
     EXPECT_FALSE(terrain.known(u, 1)) << u;
-    EXPECT_EQ(terrain.range(u, 1), kInf);
-    EXPECT_EQ(terrain.forward(u, 1), kInf);
-    EXPECT_EQ(terrain.left(u, 1), kInf);
+    EXPECT_EQ(terrain.range(u, 1), kInfinity);
+    EXPECT_EQ(terrain.forward(u, 1), kInfinity);
+    EXPECT_EQ(terrain.left(u, 1), kInfinity);
   }
   EXPECT_TRUE(terrain.known(5, 1));
   EXPECT_EQ(terrain.known_pixels, 33U * 33U - 4U);

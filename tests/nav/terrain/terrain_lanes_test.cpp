@@ -1,5 +1,6 @@
 // Tests: the two-lane terrain conversion against the plain per-pixel expression, bit for bit.
 
+#include "support/test_files.hpp"
 #include "terrain/terrain_rounding.hpp"
 
 #include "marsokhod/nav/terrain/elevation.hpp"
@@ -18,7 +19,7 @@
 namespace marsokhod::nav {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using test_support::kInf;
 
 void expect_same_bits(float got, float want, int u, int v) {
   ASSERT_EQ(std::bit_cast<std::uint32_t>(got), std::bit_cast<std::uint32_t>(want))

@@ -2,6 +2,8 @@
 // bit for bit, each one reported every time it is worked out; the zones and the path on them
 // are those on the whole maps.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav/path/drive_commands.hpp"
 #include "marsokhod/nav/terrain/terrain_rows.hpp"
@@ -17,7 +19,7 @@
 namespace marsokhod::nav {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using test_support::kInf;
 
 imaging::StereoRig rig_of_side(int side) {
   imaging::RigParameters p;

@@ -1,6 +1,7 @@
 // Tests: the level-ground view: seeable pixels, columns past the edge, ground disparity.
 
 #include "nav/portable_random.hpp"
+#include "support/test_files.hpp"
 #include "terrain/terrain_view.hpp"
 
 #include <gtest/gtest.h>
@@ -18,7 +19,7 @@
 namespace marsokhod::nav::detail {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using test_support::kInf;
 
 std::vector<float> tested_per_pixel(const std::vector<std::uint8_t>& seen, double first_d,
                                     double rise, std::vector<float> out) {

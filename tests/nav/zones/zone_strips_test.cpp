@@ -19,7 +19,7 @@ using testing::grid_terrain;
 using testing::GridSpec;
 
 /// Counts what the strips report as done again.
-class Tally final : public DynamicMeter {
+class StripTally final : public DynamicMeter {
 public:
   void operator()(Work kind, std::uint64_t count) override { counts(kind, count); }
   CountingMeter counts;
@@ -53,7 +53,7 @@ TEST(ZoneStrips, EveryStripWidthGivesTheWholeGridsZonesAndWork) {
   ASSERT_GT(whole.count(Zone::traversable), 0U);
   for (const int cells : {1, 2, 7, 16, 33, 64, 1000}) {
     CountingMeter work;
-    Tally halo;
+    StripTally halo;
     const ZoneMap strips = find_zones(rows, {}, options, work, std::pmr::get_default_resource(),
                                       ZoneStrips{cells, 0, &halo});
     EXPECT_EQ(strips.zone, whole.zone) << cells << " cells a strip";
@@ -72,7 +72,7 @@ TEST(ZoneStrips, NarrowerStripsDoMoreAgain) {
   std::uint64_t previous = 0;
   for (const int cells : {32, 16, 8, 4}) {
     CountingMeter work;
-    Tally halo;
+    StripTally halo;
     find_zones(rows, {}, ZoneOptions{}, work, std::pmr::get_default_resource(),
                ZoneStrips{cells, 0, &halo});
     EXPECT_GT(halo.counts.total(), previous) << cells;

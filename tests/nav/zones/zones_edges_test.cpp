@@ -19,7 +19,7 @@ namespace {
 using testing::grid_terrain;
 using testing::GridSpec;
 
-ZoneOptions grid_options() {
+ZoneOptions edge_grid_options() {
   ZoneOptions o;
   o.cell_m = 0.05;
   return o;
@@ -29,7 +29,7 @@ TEST(FindZonesEdges, RangeLimitBetweenTwoFloatsIsExact) {
   const GridSpec g;
   TerrainPoints t = grid_terrain(g, [](double, double) { return 0.0; });
   const float r = t.range(10, 40);
-  ZoneOptions options = grid_options();
+  ZoneOptions options = edge_grid_options();
   // Just above the point's range, and no float lies between: the point is within range.
   options.max_range_m = std::nextafter(static_cast<double>(r), 1e9);
   EXPECT_NE(find_zones(t, {}, options).at(10, 40), Zone::unknown);
@@ -49,8 +49,8 @@ TEST(FindZonesEdges, MaskOfSeveralChannelsReadsChannelZero) {
       triple(x, y, 0) = 0;
       triple(x + 1, y, 1) = 0; // other channels do not count
     }
-  const ZoneMap a = find_zones(t, single, grid_options());
-  const ZoneMap b = find_zones(t, triple, grid_options());
+  const ZoneMap a = find_zones(t, single, edge_grid_options());
+  const ZoneMap b = find_zones(t, triple, edge_grid_options());
   EXPECT_EQ(a.zone, b.zone);
   EXPECT_EQ(a.counts, b.counts);
 }
@@ -64,7 +64,7 @@ TEST(FindZonesEdges, HeldBackPixelsAreSettledAndCounted) {
     reliable(x, 31) = 0;
   for (int x = 10; x < 40; ++x) // a run far wider than a wheel
     reliable(x, 32) = 0;
-  const ZoneMap zones = find_zones(t, reliable, grid_options());
+  const ZoneMap zones = find_zones(t, reliable, edge_grid_options());
   EXPECT_EQ(zones.at(20, 30), Zone::traversable);
   EXPECT_EQ(zones.at(1, 31), Zone::unknown);
   EXPECT_EQ(zones.at(25, 32), Zone::unknown);
@@ -84,7 +84,7 @@ TEST(FindZonesEdges, UnreliablePixelWithoutRangeIsNotBridged) {
   reliable(20, 30) = 0;
   reliable(21, 30) = 0;
   t.range(21, 30) = std::numeric_limits<float>::quiet_NaN(); // not within range, so not bridged
-  const ZoneMap zones = find_zones(t, reliable, grid_options());
+  const ZoneMap zones = find_zones(t, reliable, edge_grid_options());
   EXPECT_EQ(zones.at(20, 30), Zone::unknown);
   EXPECT_EQ(zones.at(21, 30), Zone::unknown);
 }

@@ -1,6 +1,7 @@
 // Tests: the prohibited zones (steps, slopes, margins, unknown ground) on hand-made terrain.
 
 #include "nav/terrain_grid.hpp"
+#include "support/test_files.hpp"
 
 #include "marsokhod/nav/zones/zones.hpp"
 
@@ -23,7 +24,7 @@ namespace {
 using testing::grid_terrain;
 using testing::GridSpec;
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using test_support::kInf;
 
 ZoneOptions grid_options() {
   ZoneOptions o;

@@ -3,6 +3,7 @@
 
 #include "occam_port/link_rig.hpp"
 #include "occam_port/occam_rig.hpp"
+#include "support/test_files.hpp"
 
 #include "marsokhod/nav_program/channels/block_channel.hpp"
 
@@ -15,17 +16,10 @@
 namespace marsokhod::nav_program {
 namespace {
 
-std::vector<std::byte> pattern(std::size_t bytes) {
-  std::vector<std::byte> block(bytes);
-  for (std::size_t i = 0; i < bytes; ++i)
-    block[i] = std::byte(static_cast<unsigned char>(i * 7 + 3));
-  return block;
-}
-
 TEST(BlockChannel, ABlockInMemoryCostsEachSideTheDataBookInOut) {
   occam_port::testing::OccamRig rig;
   BlockChannel channel("block");
-  const std::vector<std::byte> sent = pattern(400);
+  const std::vector<std::byte> sent = test_support::byte_pattern(400);
   std::vector<std::byte> received(400);
   rig.spawn(
       "sender", [&] { channel.send(sent); });
@@ -42,7 +36,7 @@ TEST(BlockChannel, ABlockInMemoryCostsEachSideTheDataBookInOut) {
 TEST(BlockChannel, ReceivingIntoABufferOfAnotherLengthIsAProtocolError) {
   occam_port::testing::OccamRig rig;
   BlockChannel channel("block");
-  const std::vector<std::byte> sent = pattern(8);
+  const std::vector<std::byte> sent = test_support::byte_pattern(8);
   std::vector<std::byte> received(12);
   rig.spawn(
       "sender", [&] { channel.send(sent); });
@@ -55,8 +49,8 @@ TEST(BlockChannel, OnALinkTheBytesArriveInOrderAndAreCounted) {
   BlockChannel channel("over the link");
   channel.place_on_link(*rig.m0.link(0), *rig.m1.link(0));
   ASSERT_TRUE(channel.external());
-  const std::vector<std::byte> first = pattern(300);
-  const std::vector<std::byte> second = pattern(5);
+  const std::vector<std::byte> first = test_support::byte_pattern(300);
+  const std::vector<std::byte> second = test_support::byte_pattern(5);
   std::vector<std::byte> got_first(300);
   std::vector<std::byte> got_second(5);
   rig.m0.spawn("sender", [&] {

@@ -24,7 +24,7 @@ using emulator::Instruction;
 const std::filesystem::path kReference =
     std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "nav_program" / "costs" / "reference";
 
-const emulator::CostTable& t805() {
+const emulator::CostTable& probe_t805() {
   static const emulator::PlatformSpec platform = emulator::load_platform(
       std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms" / "pc-card.toml");
   return platform.nodes.front().cpu.costs;
@@ -33,7 +33,7 @@ const emulator::CostTable& t805() {
 // The entry's cycles as the kit's model prices them: every instruction in sequence (the FPU
 // not overlapped) and bitcnt at 2 cycles (the kit has no b term).
 double kit_model_cycles(const emulator::InstructionMix& mix) {
-  const emulator::CostTable& costs = t805();
+  const emulator::CostTable& costs = probe_t805();
   double cycles = 0.0;
   for (std::size_t i = 0; i < emulator::kInstructionCount; ++i) {
     const emulator::InstructionCost& c = costs[static_cast<Instruction>(i)];

@@ -1,6 +1,8 @@
 // The memory plan: each process's buffers from the image size, each node's code, workspaces,
 // free memory and peak, worked out by hand.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/nav_program/placement/memory_plan.hpp"
 #include "marsokhod/nav_program/run/navigation_program.hpp"
 
@@ -11,7 +13,7 @@
 namespace marsokhod::nav_program {
 namespace {
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 struct Shipped {
   emulator::PlatformSpec platform;

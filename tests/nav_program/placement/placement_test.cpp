@@ -1,6 +1,8 @@
 // Placement files: the shipped placements, where a platform's default placement is, and every
 // error a placement file can hold, each with its file, line and key.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/nav_program/placement/placement.hpp"
 #include "marsokhod/nav_program/run/navigation_program.hpp"
 
@@ -19,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using emulator::PlatformSpec;
 
-const fs::path kPlatforms = fs::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 const PlatformSpec& onboard() {
   static const PlatformSpec platform = emulator::load_platform(kPlatforms / "onboard.toml");

@@ -1,6 +1,8 @@
 // The navigation program on the emulated network: the same results and the same work as the
 // native cycle, clean memory faults, and the occam rule of one channel per link direction.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav_program/run/navigation_program.hpp"
@@ -15,7 +17,7 @@
 namespace marsokhod::nav_program {
 namespace {
 
-const std::filesystem::path kPlatforms = std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "platforms";
+using test_support::kPlatforms;
 
 /// A textured pair whose right image is the left one shifted by a disparity that grows down the
 /// rows, as level ground does; the stereo matcher has something to find everywhere.

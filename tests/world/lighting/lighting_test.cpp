@@ -1,5 +1,7 @@
 // Tests: the lighting presets and the lit surface's shading and cast shadows.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/world/lighting/lighting.hpp"
 #include "marsokhod/world/lighting/lit_surface.hpp"
 #include "marsokhod/world/terrain/terrain.hpp"
@@ -15,7 +17,7 @@
 namespace marsokhod::world {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using test_support::kDegree;
 constexpr double kCell = 0.02;
 
 /// An 8 m x 8 m hand-made site (401 nodes a side, centred on the origin) of uniform albedo.

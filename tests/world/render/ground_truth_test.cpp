@@ -1,5 +1,6 @@
 // Tests: the renderer's ground truth against analytic planes and boxes, and its summary.
 
+#include "support/test_files.hpp"
 #include "world/hand_scenes.hpp"
 
 #include "marsokhod/world/render/ground_truth.hpp"
@@ -17,7 +18,7 @@ namespace {
 using namespace marsokhod;
 using test::HandCamera;
 
-constexpr double kPi = std::numbers::pi;
+using test_support::kPi;
 
 world::Lighting plain_light() {
   return world::lighting_preset(world::LightPreset::high_sun);

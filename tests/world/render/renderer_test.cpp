@@ -1,5 +1,6 @@
 // Tests: the stereo renderer's rays, grey levels, noise, supersampling and misalignment.
 
+#include "support/test_files.hpp"
 #include "world/hand_scenes.hpp"
 
 #include "marsokhod/world/render/camera_view.hpp"
@@ -17,9 +18,9 @@ namespace {
 
 using namespace marsokhod;
 
-constexpr double kPi = std::numbers::pi;
+using test_support::kPi;
 
-world::RenderOptions noiseless() {
+world::RenderOptions noiseless_render() {
   world::RenderOptions options;
   options.noise_sigma = 0.0;
   return options;
@@ -87,7 +88,7 @@ TEST(Renderer, GreyLevelIsExposedLambertianRadianceAndTheSkyIsSkyGrey) {
   const UniformScene scene;
   const imaging::RigParameters p;
   const auto frame = scene.renderer.render_with_ground_truth(
-      imaging::StereoRig(p), test::level_placement(), scene.surface, noiseless());
+      imaging::StereoRig(p), test::level_placement(), scene.surface, noiseless_render());
   const world::Lighting& l = scene.light;
   const double radiance = 0.4 * (l.ambient + l.sun * std::sin(l.sun_elevation_deg * kPi / 180.0));
   const double ground = std::clamp(std::round(l.exposure * radiance), 0.0, 255.0);
@@ -160,10 +161,10 @@ TEST(Renderer, SupersamplingChangesTheImagesButNotTheGroundTruth) {
   const world::LitSurface surface(terrain, world::lighting_preset(world::LightPreset::low_sun));
   const world::Renderer renderer(terrain);
   const imaging::StereoRig rig;
-  world::RenderOptions smooth = noiseless();
+  world::RenderOptions smooth = noiseless_render();
   smooth.supersampling = 3;
   const auto one =
-      renderer.render_with_ground_truth(rig, test::level_placement(), surface, noiseless());
+      renderer.render_with_ground_truth(rig, test::level_placement(), surface, noiseless_render());
   const auto nine =
       renderer.render_with_ground_truth(rig, test::level_placement(), surface, smooth);
   EXPECT_EQ(one.truth.disparity, nine.truth.disparity);
@@ -217,7 +218,7 @@ TEST(Renderer, RightImageWarpedByGroundTruthDisparityReproducesTheLeftForEveryLi
                             world::LightPreset::dark_wet, world::LightPreset::low_sun}) {
     const world::LitSurface surface(site.terrain, world::lighting_preset(preset));
     const auto frame =
-        site.renderer.render_with_ground_truth(rig, site.placement, surface, noiseless());
+        site.renderer.render_with_ground_truth(rig, site.placement, surface, noiseless_render());
     double error = 0.0;
     int pixels = 0;
     for (int v = 0; v < rig.height(); ++v)
@@ -264,9 +265,9 @@ TEST(Renderer, RightCameraTiltShiftsItsRowsByFocalTimesTilt) {
   imaging::RigParameters tilted;
   tilted.right_misalignment.tilt_arcsec = tilt_arcsec;
   const auto ideal = site.renderer.render_view(imaging::StereoRig{}, imaging::Eye::right,
-                                               site.placement, surface, noiseless());
-  const auto frame = site.renderer.render_with_ground_truth(imaging::StereoRig(tilted),
-                                                            site.placement, surface, noiseless());
+                                               site.placement, surface, noiseless_render());
+  const auto frame = site.renderer.render_with_ground_truth(
+      imaging::StereoRig(tilted), site.placement, surface, noiseless_render());
   const double f = tilted.focal_mm / tilted.sensor_mm * tilted.width_px;
   const double expected = f * tilt_arcsec / 3600.0 * kPi / 180.0; // about 1.28 px
   const double shift = vertical_shift(frame.images.right, ideal);

@@ -1,5 +1,7 @@
 // Tests: the rover placement on the terrain (height, pitch, roll) by hand geometry.
 
+#include "support/test_files.hpp"
+
 #include "marsokhod/world/scene/rover_placement.hpp"
 
 #include <gtest/gtest.h>
@@ -11,7 +13,7 @@
 namespace marsokhod::world {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using test_support::kDegree;
 
 /// A 10 m x 10 m plane z = z0 + gx x + gy y.
 HeightField plane(double z0, double gx, double gy) {

@@ -1,6 +1,8 @@
 // The pinhole stereo rig on the rover mast: parameters, misalignment, attitude, frames.
 #pragma once
 
+#include "marsokhod/io/formats/keyed_file_error.hpp"
+
 #include <Eigen/Geometry>
 
 #include <filesystem>
@@ -10,11 +12,19 @@
 
 namespace marsokhod::imaging {
 
-/// A rig description that makes no physical sense (negative baseline, zero focal length, ...)
-/// or a rig file that cannot be read; what() names the file, the key and the problem.
+/// Rig parameters given in code that make no physical sense (negative baseline, zero focal
+/// length, cameras that do not see the ground ahead); what() names the key and the problem.
 class RigError : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
+};
+
+/// A rig file whose content the reader cannot accept: "FILE:LINE: 'rig.KEY': problem", as every
+/// keyed file's error reads (io::KeyedFileError). A file that cannot be read or is not TOML is
+/// an io::InputError instead.
+class RigFileError : public io::KeyedFileError {
+public:
+  using io::KeyedFileError::KeyedFileError;
 };
 
 /// Which camera of the pair. The left camera is the reference (x_right = x_left - d).
@@ -71,8 +81,10 @@ public:
   /// Validates the parameters; throws RigError naming the first bad one.
   explicit StereoRig(const RigParameters& parameters = {});
 
-  /// Loads a TOML rig file (format in docs/formats.md); unknown keys and impossible values are
-  /// errors naming the file, line and key. Missing keys keep the paper's defaults.
+  /// Loads a TOML rig file (format in docs/formats.md). Missing keys keep the paper's defaults.
+  /// Throws io::InputError for a file that cannot be read or a TOML syntax error, and
+  /// RigFileError, naming the file, line and key, for an unknown key, a value of the wrong type
+  /// or out of its range, or a rig whose cameras do not see the ground ahead.
   static StereoRig load(const std::filesystem::path& path);
   /// The TOML text of this rig, which load() reads back to an identical rig.
   std::string to_toml() const;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/io/formats/keyed_file_error.hpp"
 #include "marsokhod/nav/work/work.hpp"
 
 #include <array>
@@ -13,10 +14,18 @@
 
 namespace marsokhod::nav {
 
-/// A calibration file that cannot be read, or a map that does not fit the images.
+/// A calibration that cannot be fitted, or a map that does not fit the images.
 class CalibrationError : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
+};
+
+/// A calibration file whose content the reader cannot accept:
+/// "FILE:LINE: 'vertical_parallax.KEY': problem", as every keyed file's error reads
+/// (io::KeyedFileError). A file that cannot be read or is not TOML is an io::InputError instead.
+class CalibrationFileError : public io::KeyedFileError {
+public:
+  using io::KeyedFileError::KeyedFileError;
 };
 
 /// The vertical parallax of a stereo pair (paper, section 2): how many rows lower the right
@@ -63,7 +72,9 @@ imaging::Image<std::uint8_t> remove_vertical_parallax(
 inline constexpr double kMaxVerticalShift = 64.0;
 
 /// Reads a calibration file (TOML, docs/navigation.md, "Calibration file"). Throws
-/// CalibrationError naming the file (and the line where there is one) and the problem.
+/// io::InputError for a file that cannot be read or a TOML syntax error, and
+/// CalibrationFileError, naming the file, line and key, for an unknown or missing key, a value
+/// of the wrong type or out of its range, or a map shifting rows by more than kMaxVerticalShift.
 VerticalParallaxMap load_vertical_parallax(const std::filesystem::path& path);
 
 /// The calibration file text for a map; `comment` lines (may be empty) describe the fit.
