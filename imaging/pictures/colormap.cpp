@@ -18,7 +18,7 @@ namespace {
 using detail::Rgb;
 
 constexpr Rgb kPaper{255, 255, 255};
-constexpr Rgb kInk{0, 0, 0};
+constexpr Rgb kLegendInk{0, 0, 0};
 constexpr Rgb kUnknown{0, 0, 0};
 constexpr double kLowPercentile = 0.01;
 constexpr double kHighPercentile = 0.99;
@@ -155,15 +155,15 @@ void draw_legend(ImageView<std::uint8_t> panel, const LegendLayout& layout,
   const int s = layout.scale;
   int text_y = layout.margin;
   if (!options.title.empty()) {
-    detail::draw_text(panel, layout.margin, text_y, options.title, s, kInk);
+    detail::draw_text(panel, layout.margin, text_y, options.title, s, kLegendInk);
     text_y += layout.line_height;
   }
   if (!options.unit.empty())
-    detail::draw_text(panel, layout.margin, text_y, unit_caption(options.unit), s, kInk);
+    detail::draw_text(panel, layout.margin, text_y, unit_caption(options.unit), s, kLegendInk);
 
   const int bar_height = panel.height() - layout.bar_top - layout.bottom_reserve;
   fill_rect(panel, layout.bar_x - 1, layout.bar_top - 1, layout.bar_width + 2, bar_height + 2,
-            kInk);
+            kLegendInk);
   for (int row = 0; row < bar_height; ++row) {
     const double t = 1.0 - static_cast<double>(row) / std::max(bar_height - 1, 1);
     fill_rect(panel, layout.bar_x, layout.bar_top + row, layout.bar_width, 1, detail::viridis(t));
@@ -172,14 +172,14 @@ void draw_legend(ImageView<std::uint8_t> panel, const LegendLayout& layout,
     const double t = position_on_scale(layout.ticks.values[i], range);
     const int y = layout.bar_top + static_cast<int>(std::lround((1.0 - t) * (bar_height - 1)));
     fill_rect(panel, layout.bar_x + layout.bar_width + 1, y - s / 2, 3 * s, std::max(1, s / 2 * 2),
-              kInk);
+              kLegendInk);
     detail::draw_text(panel, layout.label_x, y - detail::kCapHeight * s / 2, layout.ticks.labels[i],
-                      s, kInk);
+                      s, kLegendInk);
   }
   if (layout.unknown_swatch) {
     const int y = layout.bar_top + bar_height + detail::kCapHeight * s / 2 + s + 2 * s;
     fill_rect(panel, layout.bar_x, y, layout.bar_width, detail::kCapHeight * s, kUnknown);
-    detail::draw_text(panel, layout.label_x, y, "unknown", s, kInk);
+    detail::draw_text(panel, layout.label_x, y, "unknown", s, kLegendInk);
   }
 }
 

@@ -64,8 +64,8 @@ static_assert(std::is_trivially_copyable_v<ChanOut<int>>);
 
 // Compiled occam: each side loads its operands (ldlp 1, ldl 2, ldc 1), then in or out of a
 // w-word message takes 2w+19 cycles (data book).
-constexpr std::int64_t kOperands = 1 + 2 + 1;
-constexpr std::int64_t kOneWordTransfer = kOperands + 2 * 1 + 19;
+constexpr std::int64_t kEndOperands = 1 + 2 + 1;
+constexpr std::int64_t kEndOneWordTransfer = kEndOperands + 2 * 1 + 19;
 
 void producer(ChanOut<int> out, int count) {
   for (int i = 0; i < count; ++i)
@@ -98,8 +98,8 @@ TEST(TypedEnds, EndsPassMessagesAtTheChannelsDataBookCost) {
   EXPECT_EQ(received, 42);
   // As with the channel itself: the writer's out ends at 25 cycles and waits, the reader's in
   // runs another 25 and releases it.
-  EXPECT_EQ(reader_done, rig.cycles(2 * kOneWordTransfer));
-  EXPECT_EQ(writer_done, rig.cycles(2 * kOneWordTransfer));
+  EXPECT_EQ(reader_done, rig.cycles(2 * kEndOneWordTransfer));
+  EXPECT_EQ(writer_done, rig.cycles(2 * kEndOneWordTransfer));
 }
 
 TEST(TypedEnds, ProcessesTakingOneEndEachExchangeMessagesInOrder) {
@@ -112,7 +112,7 @@ TEST(TypedEnds, ProcessesTakingOneEndEachExchangeMessagesInOrder) {
   EXPECT_EQ(rig.kernel.run().reason, StopReason::finished);
   EXPECT_EQ(received, (std::vector<int>{0, 10, 20, 30}));
   // Four one-word messages, each 25 cycles on either side, one processor.
-  EXPECT_EQ(rig.kernel.now(), rig.cycles(4 * 2 * kOneWordTransfer));
+  EXPECT_EQ(rig.kernel.now(), rig.cycles(4 * 2 * kEndOneWordTransfer));
 }
 
 TEST(TypedEnds, InputsChainAndEndsOfOneChannelCompareEqual) {

@@ -9,13 +9,13 @@
 namespace marsokhod::world {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
 } // namespace
 
 std::array<Eigen::Vector2d, 6> wheel_contacts(const RoverPose& pose,
                                               const ChassisGeometry& chassis) {
-  const double heading = pose.heading_deg * kDegree;
+  const double heading = pose.heading_deg * kRadiansPerDegree;
   const Eigen::Vector2d forward(std::cos(heading), std::sin(heading));
   const Eigen::Vector2d left(-forward.y(), forward.x());
   const Eigen::Vector2d centre(pose.x, pose.y);
@@ -43,14 +43,14 @@ RoverPlacement place_rover(const HeightField& height, const RoverPose& pose,
   RoverPlacement placement;
   placement.pose = pose;
   placement.ground_z = height.height(pose.x, pose.y);
-  placement.attitude.pitch_deg = std::atan(forward_gradient) / kDegree;
+  placement.attitude.pitch_deg = std::atan(forward_gradient) / kRadiansPerDegree;
   placement.attitude.roll_deg =
       std::asin(left_gradient / std::sqrt(1.0 + forward_gradient * forward_gradient +
                                           left_gradient * left_gradient)) /
-      kDegree;
+      kRadiansPerDegree;
   placement.level_to_world =
       Eigen::Translation3d(pose.x, pose.y, placement.ground_z) *
-      Eigen::AngleAxisd(pose.heading_deg * kDegree, Eigen::Vector3d::UnitZ());
+      Eigen::AngleAxisd(pose.heading_deg * kRadiansPerDegree, Eigen::Vector3d::UnitZ());
   return placement;
 }
 

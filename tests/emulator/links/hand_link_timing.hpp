@@ -19,4 +19,9 @@ inline LinkTiming hand_timing() {
   return t;
 }
 
+/// One data packet (11 bits) at 10 Mbit/s.
+inline constexpr Tick kByte = 1'100'000;
+/// A byte's acknowledge ends this long after its start bit.
+inline constexpr Tick kAckDone = 750'000;
+
 } // namespace marsokhod::emulator::link_testing

@@ -23,8 +23,8 @@ namespace {
 
 using link_testing::hand_timing;
 
-constexpr Tick kByte = 1'100'000;  // one data packet at 10 Mbit/s
-constexpr Tick kAckDone = 750'000; // a byte's acknowledge ends this long after its start bit
+using link_testing::kAckDone;
+using link_testing::kByte;
 
 struct WireFaults : testing::Test {
   Kernel kernel;

@@ -18,8 +18,8 @@ namespace {
 
 using link_testing::hand_timing;
 
-constexpr Tick kByte = 1'100'000;
-constexpr Tick kAckDone = 750'000;
+using link_testing::kAckDone;
+using link_testing::kByte;
 
 struct LinkReset : testing::Test {
   Kernel kernel;

@@ -1,5 +1,7 @@
 // Tests: one navigation cycle end to end, the texture mask and the rover's disparity range.
 
+#include "nav/paper_rig.hpp"
+
 #include "marsokhod/nav/cycle/navigation.hpp"
 
 #include <gtest/gtest.h>
@@ -19,11 +21,7 @@ namespace {
 
 constexpr int kSide = 128;
 
-imaging::StereoRig rig_of_side(int side) {
-  imaging::RigParameters p;
-  p.width_px = p.height_px = side;
-  return imaging::StereoRig(p);
-}
+using test_rigs::rig_of_side;
 
 // d(v) = (B / h) (f sin a + (v - cy) cos a), 0 above the horizon (docs/camera.md).
 double ground_disparity(const imaging::StereoRig& rig, int v) {

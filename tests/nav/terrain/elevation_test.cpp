@@ -1,5 +1,6 @@
 // Tests: range and elevation from disparity, with the rover pitched, rolled and level.
 
+#include "nav/paper_rig.hpp"
 #include "support/test_files.hpp"
 
 #include "marsokhod/nav/terrain/elevation.hpp"
@@ -28,12 +29,7 @@ double rad(double degrees) {
   return degrees * kPi / 180.0;
 }
 
-imaging::StereoRig rig_of_side(int side) {
-  imaging::RigParameters p;
-  p.width_px = side;
-  p.height_px = side;
-  return imaging::StereoRig(p);
-}
+using test_rigs::rig_of_side;
 
 // The disparity of the level ground at row v of a level rover: a ray y = v - cy pixels below
 // the image centre falls by f sin a + y cos a per unit of depth / f, so from height h it meets

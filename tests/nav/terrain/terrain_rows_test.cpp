@@ -2,6 +2,7 @@
 // bit for bit, each one reported every time it is worked out; the zones and the path on them
 // are those on the whole maps.
 
+#include "nav/paper_rig.hpp"
 #include "support/test_files.hpp"
 
 #include "marsokhod/nav/cycle/navigation.hpp"
@@ -21,12 +22,7 @@ namespace {
 
 using test_support::kInf;
 
-imaging::StereoRig rig_of_side(int side) {
-  imaging::RigParameters p;
-  p.width_px = side;
-  p.height_px = side;
-  return imaging::StereoRig(p);
-}
+using test_rigs::rig_of_side;
 
 /// Counts what RecomputedTerrain reports.
 class Tally final : public DynamicMeter {

@@ -13,11 +13,11 @@
 namespace marsokhod::world {
 namespace {
 
-constexpr double kCell = 0.02;
+constexpr double kObstacleCell = 0.02;
 
 /// An 8 m x 8 m field (401 nodes a side, node 200 at the origin) shaped by z(x, y).
 HeightField field(const std::function<double(double, double)>& z) {
-  HeightField height(401, 401, kCell, Eigen::Vector2d(-4.0, -4.0));
+  HeightField height(401, 401, kObstacleCell, Eigen::Vector2d(-4.0, -4.0));
   for (int j = 0; j < height.ny(); ++j)
     for (int i = 0; i < height.nx(); ++i) {
       const Eigen::Vector2d p = height.node_position(i, j);
@@ -48,7 +48,7 @@ int count_obstacles(const imaging::Image<std::uint8_t>& map) {
 
 /// Node index of coordinate x on the 8 m field.
 int node(double x) {
-  return static_cast<int>(std::lround((x + 4.0) / kCell));
+  return static_cast<int>(std::lround((x + 4.0) / kObstacleCell));
 }
 
 TEST(ObstacleMap, FlatGroundHasNoObstacles) {
@@ -134,11 +134,11 @@ imaging::Image<std::uint8_t> brute_force(const HeightField& h, const LocomotionL
 
 TEST(ObstacleMap, MatchesTheRuleEvaluatedNodeByNode) {
   // A 3 m x 2.4 m patch of steps, bumps and slopes near both limits.
-  HeightField rough(151, 121, kCell, Eigen::Vector2d(0.0, 0.0));
+  HeightField rough(151, 121, kObstacleCell, Eigen::Vector2d(0.0, 0.0));
   for (int j = 0; j < rough.ny(); ++j)
     for (int i = 0; i < rough.nx(); ++i) {
-      const double x = i * kCell;
-      const double y = j * kCell;
+      const double x = i * kObstacleCell;
+      const double y = j * kObstacleCell;
       double z = 0.45 * std::sin(2.1 * x) * std::sin(1.7 * y + 0.3) + 0.1 * x;
       z += (x > 1.0 && x < 1.6 && y > 0.5 && y < 1.9) ? 0.27 : 0.0;
       z += std::hypot(x - 2.3, y - 0.8) < 0.25 ? 0.33 : 0.0;
