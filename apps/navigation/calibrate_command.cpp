@@ -99,9 +99,9 @@ int run_calibrate(const CalibrateCli& cli) {
     fmt::print("{}\n", summary.dump(2));
     return kSuccess;
   }
+  const nav::VerticalParallaxMap& map = result.map;
   fmt::print("vertical parallax: {:+.3f} rows at the centre, up to {:.3f} rows over the image\n",
-             summary["shift_centre_rows"].get<double>(),
-             summary["largest_shift_rows"].get<double>());
+             map.shift_at(0.5 * (map.width - 1), 0.5 * (map.height - 1)), map.largest_shift());
   fmt::print("{} of {} blocks matched; last pass {} inliers, residual {:.3f} rows rms; wrote {}\n",
              result.samples.size(), result.blocks_searched, result.inliers, result.rms_residual,
              cli.out.string());

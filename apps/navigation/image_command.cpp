@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace marsokhod::apps {
@@ -40,29 +41,28 @@ struct ConvertOptions {
   std::string title;
 };
 
-std::string text_value(const nlohmann::json& value) {
-  return value.is_null() ? "none (no finite samples)" : fmt::format("{}", value.get<double>());
+std::string text_value(const std::optional<double>& value) {
+  return value ? fmt::format("{}", *value) : "none (no finite samples)";
 }
 
 int run_info(const InfoOptions& options) {
   const imaging::AnyImage image = imaging::read_image(options.file);
-  const nlohmann::json info =
+  const ImageDescription info =
       std::visit([&](const auto& pixels) { return describe_image(options.file, pixels); }, image);
   if (options.json) {
-    fmt::print("{}\n", info.dump());
+    fmt::print("{}\n", nlohmann::json(info).dump());
     return kSuccess;
   }
   fmt::print("file:       {}\n", options.file);
-  fmt::print("format:     {}\n", info["format"].get<std::string>());
-  fmt::print("width:      {}\n", info["width"].dump());
-  fmt::print("height:     {}\n", info["height"].dump());
-  fmt::print("channels:   {}\n", info["channels"].dump());
-  fmt::print("bit depth:  {} ({})\n", info["bit_depth"].dump(),
-             info["sample_type"].get<std::string>());
-  fmt::print("min:        {}\n", text_value(info["min"]));
-  fmt::print("max:        {}\n", text_value(info["max"]));
-  fmt::print("mean:       {}\n", text_value(info["mean"]));
-  fmt::print("non-finite: {}\n", info["non_finite"].dump());
+  fmt::print("format:     {}\n", info.format);
+  fmt::print("width:      {}\n", info.width);
+  fmt::print("height:     {}\n", info.height);
+  fmt::print("channels:   {}\n", info.channels);
+  fmt::print("bit depth:  {} ({})\n", info.bit_depth, info.sample_type);
+  fmt::print("min:        {}\n", text_value(info.min));
+  fmt::print("max:        {}\n", text_value(info.max));
+  fmt::print("mean:       {}\n", text_value(info.mean));
+  fmt::print("non-finite: {}\n", info.non_finite);
   return kSuccess;
 }
 

@@ -63,29 +63,48 @@ constexpr const char* sample_type() {
 } // namespace
 
 template <class T>
-nlohmann::json describe_image(const std::string& file, const imaging::Image<T>& image) {
+ImageDescription describe_image(const std::string& file, const imaging::Image<T>& image) {
   const SampleStats stats = sample_stats(image);
-  nlohmann::json info = {{"file", file},
-                         {"format", format_name(file)},
-                         {"width", image.width()},
-                         {"height", image.height()},
-                         {"channels", image.channels()},
-                         {"bit_depth", 8 * sizeof(T)},
-                         {"sample_type", sample_type<T>()},
-                         {"finite", stats.finite},
-                         {"non_finite", stats.non_finite}};
-  if (stats.finite == 0) {
-    info["min"] = info["max"] = info["mean"] = nullptr;
-    return info;
-  }
-  info["min"] = stats.min;
-  info["max"] = stats.max;
-  info["mean"] = stats.sum / static_cast<double>(stats.finite);
-  return info;
+  ImageDescription d{file,
+                     format_name(file),
+                     image.width(),
+                     image.height(),
+                     image.channels(),
+                     8 * sizeof(T),
+                     sample_type<T>(),
+                     stats.finite,
+                     stats.non_finite,
+                     {},
+                     {},
+                     {}};
+  if (stats.finite == 0)
+    return d;
+  d.min = stats.min;
+  d.max = stats.max;
+  d.mean = stats.sum / static_cast<double>(stats.finite);
+  return d;
 }
 
-template nlohmann::json describe_image(const std::string&, const imaging::Image<std::uint8_t>&);
-template nlohmann::json describe_image(const std::string&, const imaging::Image<std::uint16_t>&);
-template nlohmann::json describe_image(const std::string&, const imaging::Image<float>&);
+template ImageDescription describe_image(const std::string&, const imaging::Image<std::uint8_t>&);
+template ImageDescription describe_image(const std::string&, const imaging::Image<std::uint16_t>&);
+template ImageDescription describe_image(const std::string&, const imaging::Image<float>&);
+
+void to_json(nlohmann::json& json, const ImageDescription& d) {
+  const auto or_null = [](const std::optional<double>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+  };
+  json = {{"file", d.file},
+          {"format", d.format},
+          {"width", d.width},
+          {"height", d.height},
+          {"channels", d.channels},
+          {"bit_depth", d.bit_depth},
+          {"sample_type", d.sample_type},
+          {"finite", d.finite},
+          {"non_finite", d.non_finite},
+          {"min", or_null(d.min)},
+          {"max", or_null(d.max)},
+          {"mean", or_null(d.mean)}};
+}
 
 } // namespace marsokhod::apps
