@@ -3,6 +3,7 @@
 
 #include "cli/command.hpp"
 #include "cli/option_checks.hpp"
+#include "navigation/pair_inputs.hpp"
 
 #include "marsokhod/imaging/image/image_io.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
@@ -31,14 +32,6 @@ struct CalibrateCli {
   int max_shift = nav::CalibrationOptions{}.max_shift;
   bool json = false;
 };
-
-imaging::Image<std::uint8_t> read_grey(const fs::path& path) {
-  try {
-    return imaging::read_gray8(path);
-  } catch (const imaging::ImageError& error) {
-    throw CommandError(error.what());
-  }
-}
 
 // The rover's own search range at this image size unless the user gives one.
 int default_max_disparity(int width, int height) {

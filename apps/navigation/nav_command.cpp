@@ -44,12 +44,7 @@ struct NavCli {
 // +inf is the Middlebury "unknown"; anything else that is not a finite disparity >= 0 is an
 // error in the file, not something to guess around.
 imaging::Image<float> read_disparity(const fs::path& path, int width, int height) {
-  imaging::Image<float> disparity;
-  try {
-    disparity = imaging::read_pfm(path);
-  } catch (const imaging::ImageError& error) {
-    throw CommandError(error.what());
-  }
+  const imaging::Image<float> disparity = imaging::read_pfm(path);
   if (disparity.width() != width || disparity.height() != height)
     throw CommandError(fmt::format("{}: the disparity map is {}x{} but the images are {}x{}",
                                    path.string(), disparity.width(), disparity.height(), width,

@@ -19,11 +19,7 @@ namespace marsokhod::apps {
 namespace fs = std::filesystem;
 
 imaging::Image<std::uint8_t> read_grey(const fs::path& path) {
-  try {
-    return imaging::read_gray8(path);
-  } catch (const imaging::ImageError& error) {
-    throw CommandError(error.what());
-  }
+  return imaging::read_gray8(path);
 }
 
 imaging::StereoRig rig_for(const std::optional<fs::path>& rig_file, const fs::path& left, int width,
@@ -51,13 +47,9 @@ imaging::Image<std::uint8_t> aligned_right(const std::optional<fs::path>& calibr
                                            imaging::Image<std::uint8_t> right) {
   if (!calibration)
     return right;
-  try {
-    const nav::VerticalParallaxMap map = nav::load_vertical_parallax(*calibration);
-    nav::check_map_size(map, right.width(), right.height(), calibration->string());
-    return nav::remove_vertical_parallax(right, map);
-  } catch (const nav::CalibrationError& error) {
-    throw CommandError(error.what());
-  }
+  const nav::VerticalParallaxMap map = nav::load_vertical_parallax(*calibration);
+  nav::check_map_size(map, right.width(), right.height(), calibration->string());
+  return nav::remove_vertical_parallax(right, map);
 }
 
 // Any other failure of the read (a stream error on a folder, say) is still this file's problem

@@ -32,7 +32,7 @@ void add_pair_options(CLI::App& app, PairOptions& options);
 /// The rover's attitude: from the scene file when given, else --pitch and --roll.
 imaging::Attitude pair_attitude(const PairOptions& options);
 
-/// An 8-bit grey image; CommandError naming the file when it cannot be read.
+/// An 8-bit grey image; imaging::ImageError naming the file when it cannot be read.
 imaging::Image<std::uint8_t> read_grey(const std::filesystem::path& path);
 
 /// The rig file's rig, which must have the images' size, or without one the paper's rig at
