@@ -57,6 +57,7 @@ void print_json(const eval::TerrainEvaluationOptions& options, const eval::Terra
   json["ground_truth_paths"] = f.ground_truth_paths;
   json["paths_found_where_ground_truth_has_one"] = f.paths_found_where_ground_truth_has_one;
   json["unsafe_paths"] = f.unsafe_paths;
+  json["unsafe_paths_pixel_rule"] = f.unsafe_paths_pixel_rule;
   json["navigation_seconds_per_seed"] = f.navigation_seconds_per_seed;
   json["bands"] = nlohmann::ordered_json::array();
   for (const eval::BandFigures& b : f.bands)
@@ -75,9 +76,12 @@ void print_json(const eval::TerrainEvaluationOptions& options, const eval::Terra
     nlohmann::ordered_json entry = {{"seed", o.seed},
                                     {"found", o.found},
                                     {"ground_truth_found", o.truth_found},
-                                    {"unsafe", o.unsafe}};
+                                    {"unsafe", o.unsafe},
+                                    {"unsafe_pixel_rule", o.unsafe_pixel_rule}};
     if (!o.found)
       entry["reason"] = o.reason;
+    if (o.unsafe_hit)
+      entry["unsafe_because"] = eval::describe(*o.unsafe_hit);
     json["per_seed"].push_back(entry);
   }
   fmt::print("{}\n", json.dump(2));
@@ -87,7 +91,14 @@ std::string shown(double value) {
   return std::isfinite(value) ? fmt::format("{:.1f}", value) : std::string("-");
 }
 
-void print_table(const eval::TerrainEvaluationOptions& options, const eval::TerrainFigures& f) {
+void print_unsafe(const std::vector<eval::SeedOutcome>& outcomes) {
+  for (const eval::SeedOutcome& o : outcomes)
+    if (o.unsafe_hit)
+      fmt::print("unsafe: seed {}: {}\n", o.seed, eval::describe(*o.unsafe_hit));
+}
+
+void print_table(const eval::TerrainEvaluationOptions& options, const eval::TerrainFigures& f,
+                 const std::vector<eval::SeedOutcome>& outcomes) {
   fmt::print("{} seeds, {}x{} px, light {}, rocks {:.0f} %, {} disparity\n", f.seeds, options.size,
              options.size, options.light, 100.0 * options.rocks,
              options.oracle ? "ground-truth" : "matched");
@@ -107,9 +118,10 @@ void print_table(const eval::TerrainEvaluationOptions& options, const eval::Terr
                shown(f.false_prohibited_by_zone[static_cast<std::size_t>(z)]));
   fmt::print(")\n");
   fmt::print("paths found {} of {} seeds; ground truth has a path on {}, of which found {}; "
-             "unsafe paths {}\n",
+             "unsafe paths {} (footprint; {} by the one-pixel line)\n",
              f.paths_found, f.seeds, f.ground_truth_paths, f.paths_found_where_ground_truth_has_one,
-             f.unsafe_paths);
+             f.unsafe_paths, f.unsafe_paths_pixel_rule);
+  print_unsafe(outcomes);
   fmt::print("elevation error on judged free ground, cm, median / 90 % / 99 %:");
   for (const eval::BandFigures& b : f.bands)
     fmt::print(" {} m {} / {} / {};", b.band_m, shown(b.elevation_error_cm[0]),
@@ -135,8 +147,11 @@ Command add_terrain_evaluation(CLI::App& parent) {
       "(any zone but traversable); false prohibition = pixels traversable in the ground-truth "
       "zones that the navigation prohibits (free pixels inside the truth's margin are not "
       "scored). 'Ground truth has a path' = the same planner finds one on the ground-truth "
-      "zones and terrain; a path is unsafe when any of its pixels sees a ground-truth obstacle "
-      "(not grown), or the rover's straight drive to its start does. 'Hazards alone' scores "
+      "zones and terrain. A path is unsafe when the rover's footprint (1.85 m x 1.20 m, the "
+      "chassis in docs/navigation.md), driven along its commands from the rover's centre on the "
+      "true ground, turns included, covers a node of the world's obstacle map; the old rule "
+      "(a path pixel, or a pixel of the straight drive to its start, sees an obstacle) is "
+      "reported beside it as the one-pixel line. 'Hazards alone' scores "
       "unknown, step and slope pixels against the obstacle map itself, without margins.");
   app->add_option("--seeds", cli->seeds, "Terrain seeds A..B (inclusive) or one seed")->required();
   app->add_option("--size", cli->evaluation.size, "Image width and height, pixels")
@@ -170,7 +185,7 @@ Command add_terrain_evaluation(CLI::App& parent) {
             if (cli->json)
               print_json(cli->evaluation, figures, outcomes);
             else
-              print_table(cli->evaluation, figures);
+              print_table(cli->evaluation, figures, outcomes);
             return static_cast<int>(kSuccess);
           }};
 }

@@ -33,7 +33,32 @@ void write_picture(const std::string& folder, std::uint64_t seed, const TerrainC
   }
 }
 
+bool seen_by_both(const imaging::StereoRig& rig, const Eigen::Vector3d& point) {
+  for (const imaging::Eye eye : {imaging::Eye::left, imaging::Eye::right}) {
+    const std::optional<Eigen::Vector2d> pixel = rig.project(eye, point);
+    if (!pixel || pixel->x() < 0.0 || pixel->y() < 0.0 ||
+        pixel->x() > rig.parameters().width_px - 1.0 ||
+        pixel->y() > rig.parameters().height_px - 1.0)
+      return false;
+  }
+  return true;
+}
+
 } // namespace
+
+double unseen_start_radius(const imaging::StereoRig& rig, const imaging::Chassis& chassis) {
+  constexpr double kStep = 0.05;
+  constexpr double kLookAhead = 20.0;
+  const double half_width = 0.5 * chassis.width_m();
+  double hidden_to = 0.0;
+  for (double x = 0.0; x <= kLookAhead; x += kStep)
+    for (const double y : {-half_width, 0.0, half_width})
+      if (!seen_by_both(rig, Eigen::Vector3d(x, y, 0.0)))
+        hidden_to = x + kStep;
+  const double radius =
+      std::hypot(hidden_to, half_width) + world::LocomotionLimits{}.step_baseline_m;
+  return std::max(radius, world::TerrainSettings{}.clear_radius_m);
+}
 
 SeedRange parse_seed_range(const std::string& text) {
   const std::size_t dots = text.find("..");
@@ -58,12 +83,13 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainEvaluationOptions& cl
   settings.seed = seed;
   settings.rock_cover = cli.rocks;
   settings.size_m = cli.terrain_size;
-  const world::Terrain terrain = world::Terrain::generate(settings);
-  const world::LitSurface surface(terrain,
-                                  world::lighting_preset(world::parse_light_preset(cli.light)));
   imaging::RigParameters rig_parameters;
   rig_parameters.width_px = rig_parameters.height_px = cli.size;
   const imaging::StereoRig rig(rig_parameters);
+  settings.clear_radius_m = unseen_start_radius(rig);
+  const world::Terrain terrain = world::Terrain::generate(settings);
+  const world::LitSurface surface(terrain,
+                                  world::lighting_preset(world::parse_light_preset(cli.light)));
   world::RenderOptions render;
   render.noise_seed = seed;
   const world::RoverPlacement placement = world::place_rover(terrain.height, world::RoverPose{});
@@ -86,15 +112,19 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainEvaluationOptions& cl
 
   const nav::TerrainPoints truth_terrain =
       nav::reconstruct_terrain(frame.truth.disparity, rig, placement.attitude);
-  outcome.unsafe = result.found() && crosses_obstacle(result.plan, truth_terrain, frame.truth);
+  outcome.unsafe_pixel_rule =
+      result.found() && crosses_obstacle(result.plan, truth_terrain, frame.truth);
+  if (result.found())
+    outcome.unsafe_hit = judge_footprint(terrain, placement, result.drive.commands).hit;
+  outcome.unsafe = outcome.unsafe_hit.has_value();
   const nav::ZoneMap truth_zones = ground_truth_zones(truth_terrain, frame.truth, options.zones);
   outcome.bands = score_zones(result.zones, truth_zones, frame.truth);
   const nav::PathPlan truth_plan = nav::plan_path(truth_terrain, truth_zones, options.planner);
   outcome.truth_found = truth_plan.found;
   if (!cli.pictures.empty())
-    write_picture(
-        cli.pictures, seed,
-        {frame.images.left, result.zones, result.plan, truth_zones, truth_plan, frame.truth});
+    write_picture(cli.pictures, seed,
+                  {frame.images.left, result.zones, result.plan, truth_zones, truth_plan,
+                   frame.truth, rig, placement.attitude, outcome.unsafe_hit});
   return outcome;
 }
 

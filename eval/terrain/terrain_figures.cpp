@@ -19,6 +19,7 @@ struct Summary {
   int truth_found = 0;
   int found_where_truth = 0;
   int unsafe = 0;
+  int unsafe_pixel_rule = 0;
   double seconds = 0.0;
 };
 
@@ -33,6 +34,7 @@ Summary summarize(const std::vector<SeedOutcome>& outcomes) {
     s.truth_found += o.truth_found ? 1 : 0;
     s.found_where_truth += (o.found && o.truth_found) ? 1 : 0;
     s.unsafe += o.unsafe ? 1 : 0;
+    s.unsafe_pixel_rule += o.unsafe_pixel_rule ? 1 : 0;
     s.seconds += o.seconds;
     for (std::size_t b = 0; b < s.elevation_errors.size(); ++b)
       s.elevation_errors[b].insert(s.elevation_errors[b].end(), o.elevation_errors[b].begin(),
@@ -75,6 +77,7 @@ TerrainFigures terrain_figures(const std::vector<SeedOutcome>& outcomes) {
   figures.ground_truth_paths = s.truth_found;
   figures.paths_found_where_ground_truth_has_one = s.found_where_truth;
   figures.unsafe_paths = s.unsafe;
+  figures.unsafe_paths_pixel_rule = s.unsafe_pixel_rule;
   figures.navigation_seconds_per_seed = outcomes.empty() ? 0.0 : s.seconds / outcomes.size();
   figures.navigation_ms_per_seed = outcomes.empty() ? 0.0 : 1000.0 * s.seconds / outcomes.size();
   for (std::size_t b = 0; b < figures.bands.size(); ++b)

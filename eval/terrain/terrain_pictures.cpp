@@ -1,7 +1,10 @@
 // Drawing the comparison picture: verdict colours per pixel and the two paths.
 #include "marsokhod/eval/terrain/terrain_pictures.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <optional>
 
 namespace marsokhod::eval {
 namespace {
@@ -20,6 +23,8 @@ constexpr Rgb kNotSeen{20, 20, 60};
 constexpr Rgb kPathGreen{40, 230, 60};
 constexpr Rgb kTruthPathCyan{0, 220, 230};
 constexpr Rgb kTruthMargin{160, 160, 160};
+constexpr Rgb kFootprint{255, 0, 255};
+constexpr Rgb kHitCross{255, 30, 30};
 
 void put(imaging::Image<std::uint8_t>& picture, int x, int y, const Rgb& colour) {
   for (int c = 0; c < 3; ++c)
@@ -63,6 +68,54 @@ void draw_path(imaging::Image<std::uint8_t>& picture, const nav::PathPlan& plan,
     put(picture, p.x + offset, p.y, colour);
 }
 
+void put_inside(imaging::Image<std::uint8_t>& picture, int x, int y, int panel_width,
+                const Rgb& colour) {
+  if (x < 0 || y < 0 || x >= panel_width || y >= picture.height())
+    return;
+  for (int offset : {0, panel_width})
+    put(picture, x + offset, y, colour);
+}
+
+std::optional<Eigen::Vector2d> pixel_of(const TerrainComparison& site,
+                                        const Eigen::Vector3d& point) {
+  return site.rig.project(imaging::Eye::left, point, site.attitude);
+}
+
+void draw_segment(imaging::Image<std::uint8_t>& picture, const Eigen::Vector2d& a,
+                  const Eigen::Vector2d& b, int panel_width) {
+  const double length = (b - a).lpNorm<Eigen::Infinity>();
+  // A corner far outside the view would make the segment huge; the picture only needs its
+  // visible part, which a bounded number of steps still reaches.
+  const int steps = static_cast<int>(std::min(4096.0, std::ceil(length))) + 1;
+  for (int i = 0; i <= steps; ++i) {
+    const Eigen::Vector2d p = a + (b - a) * (static_cast<double>(i) / steps);
+    put_inside(picture, static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())),
+               panel_width, kFootprint);
+  }
+}
+
+void draw_unsafe_hit(imaging::Image<std::uint8_t>& picture, const TerrainComparison& site,
+                     int panel_width) {
+  if (!site.unsafe_hit)
+    return;
+  const FootprintHit& hit = *site.unsafe_hit;
+  for (std::size_t c = 0; c < hit.corners.size(); ++c) {
+    const auto a = pixel_of(site, hit.corners[c]);
+    const auto b = pixel_of(site, hit.corners[(c + 1) % hit.corners.size()]);
+    if (a && b)
+      draw_segment(picture, *a, *b, panel_width);
+  }
+  const auto centre = pixel_of(site, Eigen::Vector3d(hit.x_m, hit.y_m, hit.z_m));
+  if (!centre)
+    return;
+  const int cx = static_cast<int>(std::lround(centre->x()));
+  const int cy = static_cast<int>(std::lround(centre->y()));
+  for (int d = -3; d <= 3; ++d) {
+    put_inside(picture, cx + d, cy, panel_width, kHitCross);
+    put_inside(picture, cx, cy + d, panel_width, kHitCross);
+  }
+}
+
 } // namespace
 
 imaging::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison& site) {
@@ -79,6 +132,7 @@ imaging::Image<std::uint8_t> terrain_comparison_picture(const TerrainComparison&
   draw_path(picture, site.plan, 0, kPathGreen);
   draw_path(picture, site.plan, width, kPathGreen);
   draw_path(picture, site.truth_plan, 2 * width, kTruthPathCyan);
+  draw_unsafe_hit(picture, site, width);
   return picture;
 }
 

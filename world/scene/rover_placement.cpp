@@ -14,7 +14,7 @@ constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 } // namespace
 
 std::array<Eigen::Vector2d, 6> wheel_contacts(const RoverPose& pose,
-                                              const ChassisGeometry& chassis) {
+                                              const imaging::Chassis& chassis) {
   const double heading = pose.heading_deg * kRadiansPerDegree;
   const Eigen::Vector2d forward(std::cos(heading), std::sin(heading));
   const Eigen::Vector2d left(-forward.y(), forward.x());
@@ -26,7 +26,7 @@ std::array<Eigen::Vector2d, 6> wheel_contacts(const RoverPose& pose,
 }
 
 RoverPlacement place_rover(const HeightField& height, const RoverPose& pose,
-                           const ChassisGeometry& chassis) {
+                           const imaging::Chassis& chassis) {
   if (!(chassis.wheelbase_m > 0.0) || !(chassis.track_m > 0.0))
     throw std::invalid_argument("place_rover: wheelbase and track must be positive");
   if (!height.contains(pose.x, pose.y) || !std::isfinite(pose.heading_deg))

@@ -1,12 +1,16 @@
 // Evaluation on synthetic terrain: per seed, render a site, navigate on it and score the result.
 #pragma once
 
+#include "marsokhod/eval/terrain/footprint_judge.hpp"
 #include "marsokhod/eval/terrain/terrain_scoring.hpp"
+#include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/imaging/rig/chassis.hpp"
 #include "marsokhod/world/terrain/terrain.hpp"
 
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,11 +46,25 @@ struct SeedOutcome {
   BandTable hazards{};
   bool found = false;
   bool truth_found = false;
+  /// The footprint judge's verdict on the drive (footprint_judge.hpp): the rover's whole
+  /// footprint, from its centre to the path's end, over a true obstacle.
   bool unsafe = false;
+  std::optional<FootprintHit> unsafe_hit; ///< where, when unsafe
+  /// The old, kinder rule, kept for comparison: a path pixel (or a pixel of the straight
+  /// approach to the start) sees a true obstacle.
+  bool unsafe_pixel_rule = false;
   ElevationErrors elevation_errors{};
   std::string reason;
   double seconds = 0.0; ///< navigation only, host wall clock
 };
+
+/// How far from the rover's centre the ground must be clear for a single cycle to be judged
+/// fairly: the rover stands where it could not have stood among rocks, and the swath it drives
+/// first (the chassis' width straight ahead) is hidden from one camera or both up to some
+/// distance, ground a rover knows from the cycle before. The radius reaches the far corner of
+/// that hidden swath, plus the world's step baseline (obstacle nodes stand that far out from a
+/// rock). At least the generator's own clear radius.
+double unseen_start_radius(const imaging::StereoRig& rig, const imaging::Chassis& chassis = {});
 
 /// Renders the site of `seed`, navigates on it and scores it; writes seed-N.png into
 /// options.pictures when set (throws EvaluationError when the picture cannot be written).

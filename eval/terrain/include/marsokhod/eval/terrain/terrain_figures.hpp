@@ -35,7 +35,8 @@ struct TerrainFigures {
   int paths_found = 0;
   int ground_truth_paths = 0;
   int paths_found_where_ground_truth_has_one = 0;
-  int unsafe_paths = 0;
+  int unsafe_paths = 0;            ///< by the footprint judge
+  int unsafe_paths_pixel_rule = 0; ///< by the old one-pixel line rule, for comparison
   double navigation_seconds_per_seed = 0.0;
   double navigation_ms_per_seed = 0.0;
   std::array<BandFigures, kTerrainBands.size()> bands{};

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/imaging/rig/chassis.hpp"
 #include "marsokhod/nav/terrain/elevation.hpp"
 #include "marsokhod/nav/terrain/terrain_rows.hpp"
 #include "marsokhod/nav/work/work.hpp"
@@ -38,7 +39,9 @@ struct ZoneOptions {
   double step_baseline_m = 0.20;
   double max_slope_deg = 25.0;      ///< steepest slope the six-wheel chassis climbs
   double slope_baseline_m = 0.60;   ///< ground span over which a slope is measured
-  double rover_half_width_m = 0.50; ///< steps and slopes are grown by this, at each row's scale
+  /// Steps and slopes are grown by this, at each row's scale: half the chassis' width (its
+  /// wheels' outer faces), so that a centre line outside the margin keeps the wheels off them.
+  double rover_half_width_m = 0.5 * imaging::Chassis{}.width_m();
   /// Pixels the stereo matcher filled in (left-right check failed) count as unknown.
   bool unreliable_is_unknown = true;
   /// ...except a run of them along a row whose two reliable ends lie less than this apart on

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/imaging/rig/chassis.hpp"
 #include "marsokhod/world/terrain/height_field.hpp"
 
 #include <Eigen/Geometry>
@@ -18,12 +19,6 @@ struct RoverPose {
   double heading_deg = 90.0;
 };
 
-/// Marsokhod chassis footprint used to settle the rover on the ground.
-struct ChassisGeometry {
-  double wheelbase_m = 1.5; ///< first to last axle
-  double track_m = 1.0;     ///< left to right wheel centres
-};
-
 /// The rover settled on the terrain: ground height under its centre and the pitch and roll its
 /// wheels impose (imaging::Attitude conventions), plus the level frame as a world transform.
 struct RoverPlacement {
@@ -37,7 +32,7 @@ struct RoverPlacement {
 /// World (x, y) of the six wheel contacts: front left, middle left, rear left, front right,
 /// middle right, rear right.
 std::array<Eigen::Vector2d, 6> wheel_contacts(const RoverPose& pose,
-                                              const ChassisGeometry& chassis);
+                                              const imaging::Chassis& chassis);
 
 /// Settles the rover: the plane fitted by least squares to the ground heights under the six
 /// wheels gives the forward gradient a = (mean front - mean rear) / wheelbase and the leftward
@@ -47,6 +42,6 @@ std::array<Eigen::Vector2d, 6> wheel_contacts(const RoverPose& pose,
 /// is the fitted plane's normal. Throws std::invalid_argument for a non-positive wheelbase or
 /// track, or a pose outside the height field.
 RoverPlacement place_rover(const HeightField& height, const RoverPose& pose,
-                           const ChassisGeometry& chassis = {});
+                           const imaging::Chassis& chassis = {});
 
 } // namespace marsokhod::world
