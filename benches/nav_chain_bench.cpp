@@ -39,9 +39,11 @@ nav::NavigationOptions options_for(const Scene& s) {
 }
 
 template <class Meter>
-void run_chain(benchmark::State& state, Meter& meter) {
+void run_chain(benchmark::State& state, Meter& meter, int footprint_paths = -1) {
   const Scene& s = scene();
-  const nav::NavigationOptions options = options_for(s);
+  nav::NavigationOptions options = options_for(s);
+  if (footprint_paths >= 0)
+    options.footprint.paths = footprint_paths;
   for (auto _ : state) {
     nav::NavigationResult result =
         nav::navigate(s.frame.images.left, s.frame.images.right, s.rig, options, meter);
@@ -56,6 +58,12 @@ void BM_NavChain256(benchmark::State& state) {
   run_chain(state, nav::null_meter);
 }
 BENCHMARK(BM_NavChain256)->Unit(benchmark::kMillisecond);
+
+// The chain as it was before the footprint check of the chosen path, for the check's cost.
+void BM_NavChain256WithoutFootprintCheck(benchmark::State& state) {
+  run_chain(state, nav::null_meter, 0);
+}
+BENCHMARK(BM_NavChain256WithoutFootprintCheck)->Unit(benchmark::kMillisecond);
 
 void BM_NavChain256Counting(benchmark::State& state) {
   nav::CountingMeter meter;

@@ -117,9 +117,11 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainEvaluationOptions& cl
   if (result.found())
     outcome.unsafe_hit = judge_footprint(terrain, placement, result.drive.commands).hit;
   outcome.unsafe = outcome.unsafe_hit.has_value();
-  const nav::ZoneMap truth_zones = ground_truth_zones(truth_terrain, frame.truth, options.zones);
+  nav::ZoneMap truth_zones = ground_truth_zones(truth_terrain, frame.truth, options.zones);
   outcome.bands = score_zones(result.zones, truth_zones, frame.truth);
-  const nav::PathPlan truth_plan = nav::plan_path(truth_terrain, truth_zones, options.planner);
+  // The navigation's own planner, its footprint check included, on what a perfect pair shows.
+  const nav::PathPlan truth_plan = nav::plan_cycle_path(truth_terrain, truth_zones, options.planner,
+                                                        options.drive, options.footprint);
   outcome.truth_found = truth_plan.found;
   if (!cli.pictures.empty())
     write_picture(cli.pictures, seed,

@@ -119,30 +119,6 @@ StereoOptions rover_stereo_options(const imaging::StereoRig& rig, const Navigati
   return stereo;
 }
 
-template <class Meter>
-PathPlan plan_cycle_path(const TerrainRows& terrain, const ZoneMap& zones,
-                         const PlannerOptions& options, Meter& meter,
-                         std::pmr::memory_resource* memory) {
-  if (terrain.known_pixels() == 0) {
-    PathPlan none{false,
-                  "no pixel of the disparity map gives a ground point",
-                  {},
-                  {},
-                  0.0,
-                  0.0,
-                  std::pmr::vector<PixelPoint>(memory)};
-    return none;
-  }
-  return plan_path(terrain, zones, options, meter, memory);
-}
-
-template <class Meter>
-PathPlan plan_cycle_path(const TerrainPoints& terrain, const ZoneMap& zones,
-                         const PlannerOptions& options, Meter& meter,
-                         std::pmr::memory_resource* memory) {
-  return plan_cycle_path(ResidentTerrain(terrain), zones, options, meter, memory);
-}
-
 void explain_stereo_failure(const std::string& stereo_reason, PathPlan& plan) {
   if (stereo_reason.empty())
     return;
@@ -158,6 +134,7 @@ NavigationResult navigate_disparity(imaging::ImageView<const float> disparity,
   validate(options.zones);
   validate(options.planner);
   validate(options.drive);
+  validate(options.footprint);
   NavigationResult result{StereoResult{imaging::Image<float>(memory),
                                        imaging::Image<std::uint8_t>(memory),
                                        0,
@@ -168,7 +145,8 @@ NavigationResult navigate_disparity(imaging::ImageView<const float> disparity,
                           {},
                           {}};
   result.zones = find_zones(result.terrain, reliable, options.zones, meter, memory);
-  result.plan = plan_cycle_path(result.terrain, result.zones, options.planner, meter, memory);
+  result.plan = plan_cycle_path(result.terrain, result.zones, options.planner, options.drive,
+                                options.footprint, meter, memory);
   if (result.plan.found)
     result.drive = plan_drive(result.terrain, result.plan.pixels, options.drive, memory);
   return result;
@@ -193,10 +171,6 @@ NavigationResult navigate(imaging::ImageView<const std::uint8_t> left,
 }
 
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
-  template PathPlan plan_cycle_path<M>(const TerrainRows&, const ZoneMap&, const PlannerOptions&,  \
-                                       M&, std::pmr::memory_resource*);                            \
-  template PathPlan plan_cycle_path<M>(const TerrainPoints&, const ZoneMap&,                       \
-                                       const PlannerOptions&, M&, std::pmr::memory_resource*);     \
   template NavigationResult navigate<M>(                                                           \
       imaging::ImageView<const std::uint8_t>, imaging::ImageView<const std::uint8_t>,              \
       const imaging::StereoRig&, const NavigationOptions&, M&, std::pmr::memory_resource*);        \

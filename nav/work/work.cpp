@@ -40,6 +40,10 @@ std::string_view to_string(Work kind) {
     return "path_relaxation";
   case Work::path_backtrack:
     return "path_backtrack";
+  case Work::footprint_scan:
+    return "footprint_scan";
+  case Work::footprint_test:
+    return "footprint_test";
   case Work::count_:
     break;
   }

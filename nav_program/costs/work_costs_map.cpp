@@ -1,5 +1,5 @@
-// The cost table's map entries: range, elevation, prohibited zones and the path, as compiled
-// occam (code notation: work_listing.hpp).
+// The cost table's map entries: range, elevation, prohibited zones, the path and its footprint
+// check, as compiled occam (code notation: work_listing.hpp).
 
 #include "costs/work_listing.hpp"
 
@@ -158,6 +158,73 @@ WHILE y < y.start
         "array (ldc 128; prod, 11 cycles, both subscripts checked), WHILE as a test and a "
         "backward j, INT array stores checked against a 256-point path. Unit: one step of "
         "the path from the destination back to the start."},
+    WorkListing{
+        Work::footprint_scan,
+        R"(-- zone: a row of the zone map (BYTE); step, slope: the hazard zones' bytes (2, 3)
+SEQ x = 0 FOR W
+  IF
+    (zone[x] = step) OR (zone[x] = slope)
+      ...  -- the pixel's ground point against the legs: footprint_test
+    TRUE
+      SKIP)",
+        "ldc 2; ldl 0; ldl 2; bsub; lb*; diff; cj_not_taken 6             -- zone[x] = step: no\n"
+        "ldl 0; ldl 2; bsub; lb*; eqc 3; cj_taken 3                       -- zone[x] = slope: no\n"
+        "ldlp 0; ldc 21; lend_loop",
+        "[X] the reference kernel's trace: the zone byte through the row's abbreviation (ldl; "
+        "bsub; lb, x a constant-range replicator's index, not checked), the first comparison "
+        "as diff; cj, the second as eqc; cj, then the loop end: 16 instructions, 44 cycles on "
+        "the path where the pixel is neither step nor slope (all but one pixel in 32 of the "
+        "kernel's data). Unit: one pixel of a zone-map row examined; nav reports a row's width "
+        "for each row the check scans, and likewise for the passes that withhold traversable "
+        "pixels around a conflict and give them back, whose test of the byte is one "
+        "comparison and is charged as this one (the withholding pass's test of a traversable "
+        "pixel's ground point against the conflicts' box is not in the unit)."},
+    WorkListing{
+        Work::footprint_test,
+        R"(-- px, py: the ground point (REAL32); x0, y0, cs, sn: each leg's start and heading;
+-- lo, hi: the leg's extent along its heading, hw: the footprint's half-width
+SEQ c = 0 FOR n.legs
+  REAL32 dx, dy, along, across :
+  SEQ
+    dx := px - x0[c]
+    dy := py - y0[c]
+    along := (dx * cs[c]) + (dy * sn[c])
+    across := (dy * cs[c]) - (dx * sn[c])
+    IF
+      (across <= hw) AND (across >= (-hw)) AND (along >= lo[c]) AND (along <= hi[c])
+        hits := hits + 1
+      TRUE
+        SKIP)",
+        "ldlp 11; fpldnlsn; ldl 0; ldc 8; csub0; ldl 14; fpldnlsni*; fpsub  -- px - x0[c]\n"
+        "ldlp 5; fpchkerr; fpstnlsn                                     -- dx := ...\n"
+        "ldlp 10; fpldnlsn; ldl 0; ldc 8; csub0; ldl 13; fpldnlsni*; fpsub  -- py - y0[c]\n"
+        "ldlp 4; fpchkerr; fpstnlsn                                     -- dy := ...\n"
+        "ldlp 5; fpldnlsn; ldl 0; ldc 8; csub0; ldl 7; wsub; fpldnlmulsn*  -- dx * cs[c]\n"
+        "ldlp 4; fpldnlsn; ldl 0; ldc 8; csub0; ldl 6; wsub; fpldnlmulsn*  -- dy * sn[c]\n"
+        "fpadd; ldlp 3; fpchkerr; fpstnlsn                              -- along := ...\n"
+        "ldlp 4; fpldnlsn; ldl 0; ldc 8; csub0; ldl 7; wsub; fpldnlmulsn*  -- dy * cs[c]\n"
+        "ldlp 5; fpldnlsn; ldl 0; ldc 8; csub0; ldl 6; wsub; fpldnlmulsn*  -- dx * sn[c]\n"
+        "fpsub; ldlp 2; fpchkerr; fpstnlsn                              -- across := ...\n"
+        "ldlp 2; fpldnlsn; ldlp 9; fpldnlsn; fpgt; eqc 0; fpchkerr; cj_not_taken 53  -- <= hw\n"
+        "fpldzerosn; ldlp 9; fpldnlsn; fpsub                            -- -hw\n"
+        "ldlp 2; fpldnlsn; fpgt; eqc 0; fpchkerr; cj_taken 36           -- >= -hw: no\n"
+        "ldlp 0; ldc 163; lend_loop\n"
+        "-- a quarter of the point's own instructions (px := fwd[x], py := lft[x], the legs'\n"
+        "-- loop set up and checked, the points' loop end: 21 instructions, 53 cycles for its 4\n"
+        "-- legs), in like instructions\n"
+        "ldl 17; ldl 20; wsub; ldnl 0; stl 11",
+        "[X] the instruction stream as the reference kernel's trace shows it: the point "
+        "through the workspace (ldlp; fpldnlsn), the leg's values by checked subscripts (a "
+        "variable number of legs: ldc 8; csub0), fpldnlsni for x0[c] and y0[c], fpldnlmulsn "
+        "for the products, fpchkerr before each store; each comparison as NOT >, (fpgt; eqc "
+        "0; fpchkerr; cj), -hw as 0 - hw (fpldzerosn; fpsub); AND tested left to right. The "
+        "path is the kernel's most common outcome, the point beyond the leg's right side (the "
+        "second test fails: 83 instructions, 264 cycles; 49 % of the kernel's tests, 27 % "
+        "fail the first test, 10 instructions fewer, 24 % go on to the third and fourth or "
+        "are inside, 11 to 25 more), plus a quarter of the point's own instructions. [I] a "
+        "pose of a turn (along and across against the half length and width) and the "
+        "withholding pass's distance test (dx * dx + dy * dy against r * r), which nav "
+        "reports in this unit too, are of the same size and charged as this one."},
 };
 
 } // namespace

@@ -33,7 +33,7 @@ struct WorkListing {
 std::span<const WorkListing> matching_listings();
 /// The left-right check, the fill and the median (work_costs_stereo.cpp).
 std::span<const WorkListing> stereo_listings();
-/// Range, elevation, zones and path (work_costs_map.cpp).
+/// Range, elevation, zones, path and footprint check (work_costs_map.cpp).
 std::span<const WorkListing> map_listings();
 
 } // namespace marsokhod::nav_program::detail

@@ -140,8 +140,8 @@ void path(ProcessContext& c) {
   zones.counts = receive_value<decltype(zones.counts)>(s.channels.zones);
   await_hand_over(s.channels.zones);
   c.doing("safest path: row sweep costs and steps");
-  nav::PathPlan plan =
-      nav::plan_cycle_path(terrain.rows(), zones, planner_for(c), c.meter(), c.memory());
+  nav::PathPlan plan = nav::plan_cycle_path(terrain.rows(), zones, planner_for(c), s.options.drive,
+                                            s.options.footprint, c.meter(), c.memory());
   nav::explain_stereo_failure(reason, plan);
   std::pmr::vector<nav::GroundPoint> ground(c.memory());
   if (plan.found) {

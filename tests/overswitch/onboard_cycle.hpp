@@ -1,4 +1,4 @@
-// The onboard cycle of world seed 2 under a FailoverSupervisor, the fault-free run, and the
+// The onboard cycle of world seed 3 under a FailoverSupervisor, the fault-free run, and the
 // constants the overswitch tests work their expectations out from.
 #pragma once
 
@@ -34,9 +34,9 @@ constexpr Tick kByteOnWire = 1100 * emulator::kNanosecond;
 /// the FPU in use, 2.6 us at 30 MHz), its `out`, and the byte on the wire (1.1 us).
 constexpr Tick kKickLatency = 4 * kUs;
 
-/// World seed 2 at 128x128, the default site: a scene with rocks and a path through them.
+/// World seed 3 at 128x128, the default site: a scene with rocks and a path through them.
 struct Site {
-  world::SceneDescription scene = world::default_scene(2, 128);
+  world::SceneDescription scene = world::default_scene(3, 128);
   world::RenderedFrame frame = world::render_site(scene);
   imaging::StereoRig rig{scene.rig};
 };

@@ -126,8 +126,8 @@ TEST(RecomputedTerrain, ZonesPathAndGroundPathAreThoseOfTheWholeMaps) {
   const ZoneOptions zone_options;
   CountingMeter whole_work;
   CountingMeter row_work;
-  const ZoneMap zones = find_zones(whole, {}, zone_options, whole_work);
-  const ZoneMap row_zones = find_zones(rows, {}, zone_options, row_work);
+  ZoneMap zones = find_zones(whole, {}, zone_options, whole_work);
+  ZoneMap row_zones = find_zones(rows, {}, zone_options, row_work);
   EXPECT_EQ(row_zones.zone, zones.zone);
   EXPECT_EQ(row_zones.counts, zones.counts);
   EXPECT_GT(zones.count(Zone::traversable), 0U);
@@ -136,8 +136,8 @@ TEST(RecomputedTerrain, ZonesPathAndGroundPathAreThoseOfTheWholeMaps) {
   PlannerOptions planner;
   planner.target_min_m = 6.0;
   planner.target_max_m = 8.0;
-  const PathPlan plan = plan_cycle_path(whole, zones, planner, whole_work);
-  const PathPlan row_plan = plan_cycle_path(rows, row_zones, planner, row_work);
+  const PathPlan plan = plan_cycle_path(whole, zones, planner, {}, {}, whole_work);
+  const PathPlan row_plan = plan_cycle_path(rows, row_zones, planner, {}, {}, row_work);
   EXPECT_EQ(row_plan.found, plan.found);
   EXPECT_EQ(row_plan.reason, plan.reason);
   EXPECT_EQ(row_plan.pixels, plan.pixels);

@@ -3,6 +3,7 @@
 
 #include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
+#include "marsokhod/nav/cycle/checked_path.hpp"
 #include "marsokhod/nav/path/drive_commands.hpp"
 #include "marsokhod/nav/path/path_planner.hpp"
 #include "marsokhod/nav/stereo/stereo.hpp"
@@ -24,6 +25,7 @@ struct NavigationOptions {
   ZoneOptions zones;
   PlannerOptions planner;
   DriveOptions drive;
+  FootprintCheckOptions footprint;
   /// Pixels of the left image whose 5 x 5 neighbourhood spans fewer grey levels than this are
   /// featureless (clipped to black or white): whatever disparity they got, nothing was seen
   /// there, so they count as unreliable. Sensor noise alone spans about 4 sigma. 0 turns the
@@ -69,17 +71,6 @@ imaging::Image<float> seeable_disparity(imaging::ImageView<const std::uint8_t> l
                                         const imaging::StereoRig& rig,
                                         const NavigationOptions& options,
                                         std::pmr::memory_resource* memory);
-
-/// The cycle's safest path over the zones: plan_path, or no path when no pixel of the terrain
-/// is known. Instantiated for NullMeter, CountingMeter and DynamicMeter.
-template <class Meter = NullMeter>
-PathPlan plan_cycle_path(const TerrainPoints& terrain, const ZoneMap& zones,
-                         const PlannerOptions& options, Meter& meter = null_meter,
-                         std::pmr::memory_resource* memory = std::pmr::get_default_resource());
-template <class Meter = NullMeter>
-PathPlan plan_cycle_path(const TerrainRows& terrain, const ZoneMap& zones,
-                         const PlannerOptions& options, Meter& meter = null_meter,
-                         std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// A stereo matcher that gave up (a non-empty reason) leaves the cycle without a path, for
 /// that reason ("stereo: ..."), whatever the planner made of its empty map.

@@ -29,6 +29,8 @@ enum class Work : std::uint8_t {
   hazard_test,        ///< one neighbour comparison of the prohibited-zone test
   path_relaxation,    ///< one edge relaxation of the row sweep
   path_backtrack,     ///< one step rebuilding the path
+  footprint_scan,     ///< one zone-map pixel examined by the footprint check
+  footprint_test,     ///< one ground point tested against one leg or turn pose of the footprint
   count_              ///< number of kinds, not a kind
 };
 
