@@ -65,7 +65,8 @@ FootprintVerdict judge_footprint(const world::Terrain& terrain,
     if (!node)
       continue;
     const Eigen::Vector3d level = world_to_level * on_ground(terrain, *node);
-    FootprintHit hit{level.x(), level.y(), level.z(), std::hypot(level.x(), level.y()), pose, {}};
+    FootprintHit hit{level.x(), level.y(), level.z(), std::hypot(level.x(), level.y()),
+                     pose,      {},        {}};
     const auto corners = imaging::footprint_corners(chassis, to_world(frame, pose.pose));
     for (std::size_t c = 0; c < corners.size(); ++c)
       hit.corners[c] = world_to_level * on_ground(terrain, corners[c]);
@@ -79,7 +80,8 @@ std::string describe(const FootprintHit& hit) {
                      "leg {} {}",
                      hit.range_m, hit.x_m, std::abs(hit.y_m), hit.y_m >= 0.0 ? "left" : "right",
                      hit.pose.along_m, hit.pose.command + 1,
-                     hit.pose.turning ? "turning" : "driving");
+                     hit.pose.turning ? "turning" : "driving") +
+         (hit.seen_as.empty() ? std::string() : "; the navigation: " + hit.seen_as);
 }
 
 } // namespace marsokhod::eval

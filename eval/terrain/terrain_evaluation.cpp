@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <filesystem>
 #include <limits>
@@ -42,6 +43,26 @@ bool seen_by_both(const imaging::StereoRig& rig, const Eigen::Vector3d& point) {
       return false;
   }
   return true;
+}
+
+// What the navigation made of the obstacle node the footprint met: the zone of the left-image
+// pixel it projects to, unless that pixel sees something nearer.
+std::string seen_as(const FootprintHit& hit, const nav::ZoneMap& zones,
+                    const nav::TerrainPoints& truth, const imaging::StereoRig& rig,
+                    const imaging::Attitude& attitude) {
+  const std::optional<Eigen::Vector2d> pixel =
+      rig.project(imaging::Eye::left, Eigen::Vector3d(hit.x_m, hit.y_m, hit.z_m), attitude);
+  if (!pixel)
+    return "behind the left camera";
+  const int x = static_cast<int>(std::lround(pixel->x()));
+  const int y = static_cast<int>(std::lround(pixel->y()));
+  if (x < 0 || y < 0 || x >= zones.width() || y >= zones.height())
+    return "outside the view";
+  const double seen_range = truth.range(x, y);
+  const double node_range = std::hypot(hit.x_m, hit.y_m);
+  if (std::isfinite(seen_range) && seen_range < node_range - 0.15)
+    return fmt::format("hidden from the left camera by ground {:.2f} m away", seen_range);
+  return fmt::format("{} at pixel ({}, {})", nav::to_string(zones.at(x, y)), x, y);
 }
 
 } // namespace
@@ -117,6 +138,9 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainEvaluationOptions& cl
   if (result.found())
     outcome.unsafe_hit = judge_footprint(terrain, placement, result.drive.commands).hit;
   outcome.unsafe = outcome.unsafe_hit.has_value();
+  if (outcome.unsafe_hit)
+    outcome.unsafe_hit->seen_as =
+        seen_as(*outcome.unsafe_hit, result.zones, truth_terrain, rig, placement.attitude);
   nav::ZoneMap truth_zones = ground_truth_zones(truth_terrain, frame.truth, options.zones);
   outcome.bands = score_zones(result.zones, truth_zones, frame.truth);
   // The navigation's own planner, its footprint check included, on what a perfect pair shows.

@@ -26,6 +26,9 @@ struct FootprintHit {
   nav::DrivePose pose;  ///< the rover's pose when its footprint first covered an obstacle
   /// The footprint's corners then, on the true ground, level frame (for pictures).
   std::array<Eigen::Vector3d, 4> corners{};
+  /// What the navigation made of the node, when known ("margin", "unknown", "hidden from the
+  /// left camera", ...); empty until the caller says.
+  std::string seen_as;
 };
 
 /// What the footprint judge found; no hit means the drive is safe.
