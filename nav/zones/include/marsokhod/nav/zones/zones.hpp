@@ -37,8 +37,8 @@ struct ZoneOptions {
   /// baseline away (`eval terrain --seeds 1..50`: 9.8 % of free ground prohibited at 0.30 m,
   /// 8.4 % at 0.20 m; obstacle recall 96.5 % and 95.9 %).
   double step_baseline_m = 0.20;
-  double max_slope_deg = 25.0;      ///< steepest slope the six-wheel chassis climbs
-  double slope_baseline_m = 0.60;   ///< ground span over which a slope is measured
+  double max_slope_deg = 25.0;    ///< steepest slope the six-wheel chassis climbs
+  double slope_baseline_m = 0.60; ///< ground span over which a slope is measured
   /// Steps and slopes are grown by this, at each row's scale: half the chassis' width (its
   /// wheels' outer faces), so that a centre line outside the margin keeps the wheels off them.
   double rover_half_width_m = 0.5 * imaging::Chassis{}.width_m();
