@@ -1,7 +1,6 @@
 // Planning, checking the drive by the footprint, and planning again around what it met.
 #include "marsokhod/nav/cycle/checked_path.hpp"
 
-#include "terrain/terrain_view.hpp"
 #include "work/work_report.hpp"
 
 #include "marsokhod/nav/path/footprint_check.hpp"
@@ -11,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -87,8 +87,8 @@ template <class Meter>
 PathPlan checked_plan(const TerrainRows& terrain, ZoneMap& zones, const PlannerOptions& planner,
                       const DriveOptions& drive, const FootprintCheckOptions& options, Meter& meter,
                       std::pmr::memory_resource* memory) {
+  // The first conflict met; once there is one, some ground is withheld until the end.
   std::optional<FootprintConflict> first;
-  bool withheld = false;
   imaging::Chassis checked = options.chassis;
   checked.wheel_diameter_m += 2.0 * options.allowance_m;
   for (int attempt = 0; attempt < options.paths; ++attempt) {
@@ -101,17 +101,15 @@ PathPlan checked_plan(const TerrainRows& terrain, ZoneMap& zones, const PlannerO
     const std::pmr::vector<FootprintConflict> conflicts = footprint_conflicts(
         terrain, zones, commands.commands, checked, options.conflicts_per_path, meter, memory);
     if (conflicts.empty()) {
-      if (withheld)
+      if (first)
         restore(zones, meter);
       return plan;
     }
     if (!first)
       first = conflicts.front();
     withhold_around(terrain, conflicts, checked, zones, meter);
-    withheld = true;
   }
-  if (withheld)
-    restore(zones, meter);
+  restore(zones, meter);
   return no_path(refusal(*first, options.paths), memory);
 }
 
