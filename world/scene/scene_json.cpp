@@ -18,6 +18,7 @@ json terrain_json(const TerrainSettings& t, const LocomotionLimits& limits) {
           {"undulation_m", t.undulation_m},
           {"regional_slope_deg", t.regional_slope_deg},
           {"clear_radius_m", t.clear_radius_m},
+          {"clear_centre_m", {t.clear_centre.x(), t.clear_centre.y()}},
           {"obstacle_limits",
            {{"max_step_m", limits.max_step_m},
             {"max_slope_deg", limits.max_slope_deg},

@@ -76,7 +76,7 @@ std::vector<Crater> sample_craters(const CraterField& field, std::uint64_t seed)
     for (int attempt = 0; attempt < kPlacementAttempts; ++attempt) {
       crater.centre = Eigen::Vector2d(rng.uniform(-0.5, 0.5) * field.extent_m,
                                       rng.uniform(-0.5, 0.5) * field.extent_m);
-      if (crater.centre.norm() >= field.clear_radius_m + crater.reach_m()) {
+      if ((crater.centre - field.clear_centre).norm() >= field.clear_radius_m + crater.reach_m()) {
         craters.push_back(crater);
         break;
       }

@@ -176,7 +176,7 @@ std::vector<Rock> sample_rocks(const RockField& field, std::uint64_t seed) {
     Rock rock = draw_rock_shape(diameter, rng);
     rock.centre = Eigen::Vector2d(rng.uniform(-0.5, 0.5) * side, rng.uniform(-0.5, 0.5) * side);
     placed_area += 0.25 * std::numbers::pi * diameter * diameter;
-    if (rock.centre.norm() < field.clear_radius_m + rock.reach_m())
+    if ((rock.centre - field.clear_centre).norm() < field.clear_radius_m + rock.reach_m())
       continue;
     rocks.push_back(rock);
   }

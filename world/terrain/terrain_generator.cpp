@@ -47,6 +47,8 @@ void validate(const TerrainSettings& settings) {
     throw std::invalid_argument(
         fmt::format("TerrainSettings: regional_slope_deg = {} is out of range (must be 0 .. <45)",
                     settings.regional_slope_deg));
+  if (!settings.clear_centre.allFinite())
+    throw std::invalid_argument("TerrainSettings: clear_centre must be finite");
   if (!(settings.clear_radius_m >= 0.0) || !std::isfinite(settings.clear_radius_m))
     throw std::invalid_argument(fmt::format(
         "TerrainSettings: clear_radius_m = {} must be zero or positive", settings.clear_radius_m));
@@ -62,13 +64,15 @@ Terrain Terrain::generate(const TerrainSettings& settings, const LocomotionLimit
   terrain.height = HeightField(n, n, settings.cell_m, Eigen::Vector2d(-half_span, -half_span));
 
   shape_regolith(settings, terrain.height);
-  const CraterField crater_field{settings.crater_density, settings.size_m, settings.clear_radius_m};
+  const CraterField crater_field{settings.crater_density, settings.size_m, settings.clear_radius_m,
+                                 settings.clear_centre};
   carve_craters(
       sample_craters(crater_field, terrain_stream_seed(settings.seed, TerrainStream::craters)),
       terrain.height);
   terrain.albedo =
       regolith_albedo(terrain.height, terrain_stream_seed(settings.seed, TerrainStream::albedo));
-  const RockField rock_field{settings.rock_cover, settings.size_m, settings.clear_radius_m};
+  const RockField rock_field{settings.rock_cover, settings.size_m, settings.clear_radius_m,
+                             settings.clear_centre};
   place_rocks(sample_rocks(rock_field, terrain_stream_seed(settings.seed, TerrainStream::rocks)),
               terrain.height, terrain.albedo);
   for (float& a : std::span(terrain.albedo.data(), terrain.albedo.size()))

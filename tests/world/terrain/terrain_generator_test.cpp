@@ -84,11 +84,13 @@ TEST(TerrainGenerator, RealisedRockCoverMatchesTheSetting) {
   }
 }
 
-TEST(TerrainGenerator, ClearDiscHasNeitherRocksNorCraters) {
+// The disc around `centre` (radius 2 m) is left bare; rocks and craters land outside it.
+void expect_clear_disc_around(const Eigen::Vector2d& centre) {
   TerrainSettings settings = small_site(5);
   settings.rock_cover = 0.3;
   settings.crater_density = 0.2;
   settings.clear_radius_m = 2.0;
+  settings.clear_centre = centre;
   const Terrain busy = Terrain::generate(settings);
   settings.rock_cover = 0.0;
   settings.crater_density = 0.0;
@@ -98,7 +100,7 @@ TEST(TerrainGenerator, ClearDiscHasNeitherRocksNorCraters) {
   for (int j = 0; j < bare.height.ny(); ++j)
     for (int i = 0; i < bare.height.nx(); ++i) {
       const bool differs = busy.height.at(i, j) != bare.height.at(i, j);
-      if (bare.height.node_position(i, j).norm() < settings.clear_radius_m) {
+      if ((bare.height.node_position(i, j) - centre).norm() < settings.clear_radius_m) {
         ++inside;
         EXPECT_FALSE(differs) << "node " << i << ", " << j;
         if (differs)
@@ -109,6 +111,14 @@ TEST(TerrainGenerator, ClearDiscHasNeitherRocksNorCraters) {
     }
   EXPECT_GT(inside, 30000u);
   EXPECT_GT(changed_outside, 10000u); // rocks and craters did land outside the disc
+}
+
+TEST(TerrainGenerator, ClearDiscHasNeitherRocksNorCraters) {
+  expect_clear_disc_around(Eigen::Vector2d::Zero());
+}
+
+TEST(TerrainGenerator, ClearDiscFollowsItsCentre) {
+  expect_clear_disc_around(Eigen::Vector2d(3.0, -2.5));
 }
 
 /// Number of 4-connected regions of nodes below `level`.

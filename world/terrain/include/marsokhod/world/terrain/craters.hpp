@@ -38,6 +38,7 @@ struct CraterField {
   double density_per_m2 = 0.004;
   double extent_m = 48.0;
   double clear_radius_m = 1.5;
+  Eigen::Vector2d clear_centre = Eigen::Vector2d::Zero();
 };
 
 /// Draws round(density * area) depressions (random rounding): diameters from the power law on

@@ -64,6 +64,7 @@ struct RockField {
   double rock_cover = 0.10;
   double extent_m = 48.0;
   double clear_radius_m = 1.5;
+  Eigen::Vector2d clear_centre = Eigen::Vector2d::Zero();
 };
 
 /// Draws rocks with the Golombek-Rapp size distribution at uniform random positions until

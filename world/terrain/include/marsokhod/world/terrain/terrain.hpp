@@ -26,6 +26,8 @@ struct TerrainSettings {
   double regional_slope_deg = 2.0; ///< tilt of the whole site
   /// A clear disc around the origin where the rover starts (no rocks, no craters).
   double clear_radius_m = 1.5;
+  /// Centre of that disc (a course starts away from the site's centre).
+  Eigen::Vector2d clear_centre = Eigen::Vector2d::Zero();
 };
 
 /// Throws std::invalid_argument naming the first setting out of range: size and cell must be
