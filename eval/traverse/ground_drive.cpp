@@ -1,0 +1,97 @@
+// Driving the commands on the true ground, reading the inclinometer as the chassis would.
+#include "marsokhod/eval/traverse/ground_drive.hpp"
+
+#include "marsokhod/eval/terrain/footprint_judge.hpp"
+#include "marsokhod/nav/path/drive_poses.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace marsokhod::eval {
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+world::RoverPose to_world(const world::RoverPose& start, const imaging::PlanarPose& local) {
+  const double h = start.heading_deg / kDegrees;
+  return {start.x + local.x * std::cos(h) - local.y * std::sin(h),
+          start.y + local.x * std::sin(h) + local.y * std::cos(h),
+          start.heading_deg + local.heading_rad * kDegrees};
+}
+
+bool same_pose(const nav::DrivePose& a, const nav::DrivePose& b) {
+  return a.command == b.command && a.turning == b.turning && a.along_m == b.along_m &&
+         a.pose.heading_rad == b.pose.heading_rad;
+}
+
+} // namespace
+
+double tilt_deg(double pitch_deg, double roll_deg) {
+  const double c = std::cos(pitch_deg / kDegrees) * std::cos(roll_deg / kDegrees);
+  return std::acos(std::clamp(c, -1.0, 1.0)) * kDegrees;
+}
+
+GroundDrive drive_on_ground(const world::Terrain& terrain, const world::RoverPose& start,
+                            std::span<const nav::DriveCommand> commands,
+                            const imaging::Chassis& chassis, const GroundDriveLimits& limits) {
+  const world::RoverPlacement placement = world::place_rover(terrain.height, start, chassis);
+  const FootprintVerdict verdict = judge_footprint(terrain, placement, commands, chassis);
+  const std::vector<nav::DrivePose> poses = nav::drive_poses(commands);
+  GroundDrive drive;
+  drive.end = start;
+  double next_reading = 0.0;
+  double last_heading = 0.0;
+  for (const nav::DrivePose& local : poses) {
+    const world::RoverPose pose = to_world(start, local.pose);
+    drive.turned_deg += std::abs(local.pose.heading_rad - last_heading) * kDegrees;
+    last_heading = local.pose.heading_rad;
+    drive.end = pose;
+    drive.driven_m = local.along_m;
+    if (verdict.hit && same_pose(local, verdict.hit->pose)) {
+      drive.unsafe =
+          fmt::format("the footprint covers a true obstacle ({})", describe(*verdict.hit));
+      drive.unsafe_at = Eigen::Vector2d(pose.x, pose.y);
+      drive.track.emplace_back(pose.x, pose.y);
+      return drive;
+    }
+    if (!terrain.height.contains(pose.x, pose.y)) {
+      drive.unsafe = "the rover left the site";
+      drive.unsafe_at = Eigen::Vector2d(pose.x, pose.y);
+      return drive;
+    }
+    if (!local.turning && local.along_m + 1e-9 < next_reading)
+      continue;
+    next_reading = local.along_m + limits.read_every_m;
+    drive.track.emplace_back(pose.x, pose.y);
+    const imaging::Attitude attitude = world::place_rover(terrain.height, pose, chassis).attitude;
+    const double tilt = tilt_deg(attitude.pitch_deg, attitude.roll_deg);
+    if (tilt > limits.tilt_limit_deg) {
+      drive.unsafe =
+          fmt::format("tilt {:.1f} deg over the chassis limit {:.1f} deg (pitch "
+                      "{:.1f}, roll {:.1f})",
+                      tilt, limits.tilt_limit_deg, attitude.pitch_deg, attitude.roll_deg);
+      drive.unsafe_at = Eigen::Vector2d(pose.x, pose.y);
+      return drive;
+    }
+    if (tilt > limits.emergency_tilt_deg) {
+      drive.emergency_stop = true;
+      drive.tilt_deg = tilt;
+      drive.risen_side = attitude.roll_deg >= 0.0 ? nav::Side::left : nav::Side::right;
+      return drive;
+    }
+    if (limits.goal &&
+        (Eigen::Vector2d(pose.x, pose.y) - *limits.goal).norm() <= limits.goal_tolerance_m) {
+      drive.at_goal = true;
+      return drive;
+    }
+  }
+  const Eigen::Vector2d end(drive.end.x, drive.end.y);
+  if (drive.track.empty() || (drive.track.back() - end).norm() > 1e-9)
+    drive.track.push_back(end);
+  return drive;
+}
+
+} // namespace marsokhod::eval

@@ -1,0 +1,24 @@
+// The traverse seen from above: the site's relief, its true obstacles, every cycle's plan and
+// the driven track.
+#pragma once
+
+#include "marsokhod/eval/traverse/traverse.hpp"
+#include "marsokhod/imaging/image/image.hpp"
+#include "marsokhod/world/terrain/terrain.hpp"
+
+#include <cstdint>
+
+namespace marsokhod::eval {
+
+/// Ground per map pixel.
+inline constexpr double kTraverseMapCellM = 0.10;
+
+/// An RGB map of the course at kTraverseMapCellM a pixel, north up: the terrain hillshaded
+/// (sun from the north-west), true obstacles red, each cycle's planned path blue, the driven
+/// track yellow, emergency stops magenta squares, unsafe events red crosses, the start green
+/// and the goal (its tolerance circle) white; the border shows the outcome (green success,
+/// orange hand-over or timeout, red unsafe).
+imaging::Image<std::uint8_t> traverse_map(const world::Terrain& terrain,
+                                          const TraverseResult& result);
+
+} // namespace marsokhod::eval

@@ -1,0 +1,139 @@
+// Drawing the traverse map: hillshade, obstacles, plans, track and events.
+#include "marsokhod/eval/traverse/traverse_map.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace marsokhod::eval {
+namespace {
+
+using Rgb = std::array<std::uint8_t, 3>;
+constexpr Rgb kObstacle{220, 40, 40};
+constexpr Rgb kPlan{60, 120, 255};
+constexpr Rgb kTrack{255, 220, 0};
+constexpr Rgb kStop{255, 0, 255};
+constexpr Rgb kStart{0, 230, 0};
+constexpr Rgb kGoal{255, 255, 255};
+
+// Map pixel <-> world: column from the west edge, row from the north edge.
+struct MapFrame {
+  double west = 0.0;
+  double north = 0.0;
+  int width = 0;
+  int height = 0;
+  Eigen::Vector2d pixel(const Eigen::Vector2d& world) const {
+    return {(world.x() - west) / kTraverseMapCellM, (north - world.y()) / kTraverseMapCellM};
+  }
+  Eigen::Vector2d world(int x, int y) const {
+    return {west + (x + 0.5) * kTraverseMapCellM, north - (y + 0.5) * kTraverseMapCellM};
+  }
+};
+
+void put(imaging::Image<std::uint8_t>& map, int x, int y, const Rgb& colour) {
+  if (x < 0 || y < 0 || x >= map.width() || y >= map.height())
+    return;
+  for (int c = 0; c < 3; ++c)
+    map(x, y, c) = colour[static_cast<std::size_t>(c)];
+}
+
+void segment(imaging::Image<std::uint8_t>& map, const MapFrame& f, const Eigen::Vector2d& a,
+             const Eigen::Vector2d& b, const Rgb& colour) {
+  const Eigen::Vector2d pa = f.pixel(a);
+  const Eigen::Vector2d pb = f.pixel(b);
+  const int steps = static_cast<int>(std::min(8192.0, std::ceil((pb - pa).norm()))) + 1;
+  for (int i = 0; i <= steps; ++i) {
+    const Eigen::Vector2d p = pa + (pb - pa) * (static_cast<double>(i) / steps);
+    put(map, static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())), colour);
+  }
+}
+
+void polyline(imaging::Image<std::uint8_t>& map, const MapFrame& f,
+              const std::vector<Eigen::Vector2d>& points, const Rgb& colour) {
+  for (std::size_t i = 1; i < points.size(); ++i)
+    segment(map, f, points[i - 1], points[i], colour);
+}
+
+void square(imaging::Image<std::uint8_t>& map, const MapFrame& f, const Eigen::Vector2d& at,
+            int half, const Rgb& colour) {
+  const Eigen::Vector2d p = f.pixel(at);
+  const int cx = static_cast<int>(std::lround(p.x()));
+  const int cy = static_cast<int>(std::lround(p.y()));
+  for (int dy = -half; dy <= half; ++dy)
+    for (int dx = -half; dx <= half; ++dx)
+      put(map, cx + dx, cy + dy, colour);
+}
+
+void circle(imaging::Image<std::uint8_t>& map, const MapFrame& f, const Eigen::Vector2d& centre,
+            double radius_m, const Rgb& colour) {
+  constexpr int kSteps = 180;
+  for (int i = 0; i < kSteps; ++i) {
+    const double a0 = 2.0 * M_PI * i / kSteps;
+    const double a1 = 2.0 * M_PI * (i + 1) / kSteps;
+    segment(map, f, centre + radius_m * Eigen::Vector2d(std::cos(a0), std::sin(a0)),
+            centre + radius_m * Eigen::Vector2d(std::cos(a1), std::sin(a1)), colour);
+  }
+}
+
+void hillshade(imaging::Image<std::uint8_t>& map, const MapFrame& f,
+               const world::Terrain& terrain) {
+  const Eigen::Vector3d sun = Eigen::Vector3d(-1.0, 1.0, 1.5).normalized();
+  const world::HeightField& h = terrain.height;
+  for (int y = 0; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x) {
+      const Eigen::Vector2d w = f.world(x, y);
+      const double shade = std::clamp(h.normal(w.x(), w.y()).dot(sun), 0.0, 1.0);
+      const auto grey = static_cast<std::uint8_t>(std::lround(40.0 + 180.0 * shade));
+      const auto node_i =
+          static_cast<int>(std::lround((w.x() - h.node_position(0, 0).x()) / h.cell_m()));
+      const auto node_j =
+          static_cast<int>(std::lround((w.y() - h.node_position(0, 0).y()) / h.cell_m()));
+      const bool obstacle = node_i >= 0 && node_j >= 0 && node_i < h.nx() && node_j < h.ny() &&
+                            terrain.obstacles(node_i, node_j) != 0;
+      put(map, x, y, obstacle ? kObstacle : Rgb{grey, grey, grey});
+    }
+}
+
+Rgb outcome_colour(TraverseOutcome outcome) {
+  if (outcome == TraverseOutcome::success)
+    return {0, 200, 0};
+  if (outcome == TraverseOutcome::unsafe)
+    return {230, 0, 0};
+  return {255, 150, 0};
+}
+
+} // namespace
+
+imaging::Image<std::uint8_t> traverse_map(const world::Terrain& terrain,
+                                          const TraverseResult& result) {
+  const double half = 0.5 * terrain.settings.size_m;
+  MapFrame f{-half, half, 0, 0};
+  f.width = f.height = static_cast<int>(std::lround(terrain.settings.size_m / kTraverseMapCellM));
+  imaging::Image<std::uint8_t> map(f.width, f.height, 3, 0);
+  hillshade(map, f, terrain);
+  for (const TraverseCycle& cycle : result.cycles)
+    polyline(map, f, cycle.planned, kPlan);
+  for (const TraverseCycle& cycle : result.cycles)
+    polyline(map, f, cycle.track, kTrack);
+  for (const TraverseCycle& cycle : result.cycles)
+    if (cycle.emergency_stop && !cycle.track.empty())
+      square(map, f, cycle.track.back(), 4, kStop);
+  for (const UnsafeEvent& event : result.unsafe_events) {
+    const Eigen::Vector2d at(event.x_m, event.y_m);
+    segment(map, f, at + Eigen::Vector2d(-1, -1), at + Eigen::Vector2d(1, 1), kObstacle);
+    segment(map, f, at + Eigen::Vector2d(-1, 1), at + Eigen::Vector2d(1, -1), kObstacle);
+  }
+  square(map, f, Eigen::Vector2d(result.start.x, result.start.y), 5, kStart);
+  circle(map, f, result.goal, result.settings.goal_tolerance_m, kGoal);
+  const Rgb border = outcome_colour(result.outcome);
+  for (int i = 0; i < 6; ++i)
+    for (int x = 0; x < f.width; ++x) {
+      put(map, x, i, border);
+      put(map, x, f.height - 1 - i, border);
+      put(map, i, x, border);
+      put(map, f.width - 1 - i, x, border);
+    }
+  return map;
+}
+
+} // namespace marsokhod::eval

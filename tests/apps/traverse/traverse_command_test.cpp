@@ -1,0 +1,75 @@
+// `marsokhod traverse`: its files and keys, and the exit codes of bad options and folders.
+#include "support/run_marsokhod.hpp"
+
+#include "marsokhod/imaging/image/image_io.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <variant>
+
+namespace marsokhod::apps {
+namespace {
+
+using marsokhod::testing::run_marsokhod;
+
+std::filesystem::path scratch(const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "marsokhod-traverse-tests" / name;
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+TEST(TraverseCommand, WritesTheMapTheCyclesAndTheSummary) {
+  const std::filesystem::path dir = scratch("short");
+  const auto result = run_marsokhod("traverse --seed 4 --rocks 0 --slope 0 --goal-m 20 --out '" +
+                                    dir.string() + "' --json");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  for (const char* key :
+       {"outcome", "distance_m", "path_efficiency", "cycles", "emergency_stops", "hand_overs",
+        "unsafe_events", "mission_seconds", "driving_seconds", "compute_seconds"})
+    EXPECT_TRUE(json.contains(key)) << key;
+  std::ifstream file(dir / "traverse.json");
+  EXPECT_EQ(nlohmann::json::parse(file), json);
+  std::ifstream cycles(dir / "cycles.jsonl");
+  std::string line;
+  int lines = 0;
+  while (std::getline(cycles, line)) {
+    const auto cycle = nlohmann::json::parse(line);
+    EXPECT_EQ(cycle["cycle"], lines);
+    ++lines;
+  }
+  EXPECT_EQ(lines, json["cycles"]);
+  const imaging::AnyImage map = imaging::read_image(dir / "map.png");
+  const auto* rgb = std::get_if<imaging::Image<std::uint8_t>>(&map);
+  ASSERT_NE(rgb, nullptr);
+  EXPECT_EQ(rgb->width(), 400); // (20 m + 2 x 10 m) at 0.1 m a pixel
+  EXPECT_EQ(rgb->channels(), 3);
+}
+
+TEST(TraverseCommand, AnOutputFolderThatCannotBeMadeIsARuntimeErrorNamingIt) {
+  const std::filesystem::path base = scratch("blocked");
+  std::filesystem::create_directories(base);
+  std::ofstream(base / "a-file") << "not a folder";
+  const std::filesystem::path dir = base / "a-file" / "out";
+  const auto result = run_marsokhod("traverse --goal-m 20 --out '" + dir.string() + "'");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find(dir.string()), std::string::npos) << result.err;
+}
+
+TEST(TraverseCommand, OptionsOutOfRangeAreUsageErrorsNamingTheOption) {
+  for (const std::string option : {"--rocks 0.6", "--slope 20", "--goal-m 2", "--light dusk",
+                                   "--size 16", "--max-cycles -1", "--seed x"}) {
+    const auto result = run_marsokhod("traverse " + option);
+    EXPECT_EQ(result.exit_code, 2) << option;
+    const std::string name = option.substr(0, option.find(' '));
+    EXPECT_NE(result.err.find(name), std::string::npos) << option << ": " << result.err;
+  }
+}
+
+} // namespace
+} // namespace marsokhod::apps

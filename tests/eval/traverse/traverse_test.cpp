@@ -1,0 +1,92 @@
+// Tests: whole traverses on generated sites, judged by geometry (the goal's distance bounds the
+// drive) and by determinism; bad settings.
+
+#include "marsokhod/eval/traverse/traverse.hpp"
+#include "marsokhod/eval/traverse/traverse_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace marsokhod::eval {
+namespace {
+
+TraverseSettings short_bare_course() {
+  TraverseSettings s;
+  s.seed = 4;
+  s.rocks = 0.0;
+  s.slope_deg = 0.0;
+  s.goal_m = 20.0;
+  return s;
+}
+
+std::string without_host(nlohmann::ordered_json doc) {
+  doc.erase("host");
+  return doc.dump();
+}
+
+// Within 1.5 m of a goal 20 m away is at least 18.5 m of driving; on ground without rocks the
+// rover should not wander far from the straight line.
+TEST(Traverse, RockFreeCourseReachesTheGoal) {
+  const TraverseResult r = run_traverse(short_bare_course());
+  ASSERT_EQ(r.outcome, TraverseOutcome::success) << traverse_json(r).dump(2);
+  EXPECT_LE(r.goal_left_m, 1.5);
+  EXPECT_GE(r.distance_m, 18.5 - 1e-9);
+  EXPECT_GT(r.path_efficiency(), 0.85);
+  EXPECT_TRUE(r.unsafe_events.empty());
+  EXPECT_GE(r.cycles.size(), 2u); // a normal path is at most 12 m
+}
+
+TEST(Traverse, SameSettingsGiveTheSameTraverse) {
+  TraverseSettings s = short_bare_course();
+  s.rocks = 0.10;
+  const TraverseResult a = run_traverse(s);
+  const TraverseResult b = run_traverse(s);
+  EXPECT_EQ(without_host(traverse_json(a)), without_host(traverse_json(b)));
+  ASSERT_EQ(a.cycles.size(), b.cycles.size());
+  for (std::size_t i = 0; i < a.cycles.size(); ++i) {
+    nlohmann::ordered_json ca = cycle_json(a.cycles[i]);
+    nlohmann::ordered_json cb = cycle_json(b.cycles[i]);
+    EXPECT_EQ(without_host(ca), without_host(cb));
+  }
+}
+
+TEST(Traverse, CycleLimitEndsInTimeout) {
+  TraverseSettings s = short_bare_course();
+  s.goal_m = 60.0;
+  s.max_cycles = 1;
+  const TraverseResult r = run_traverse(s);
+  EXPECT_EQ(r.outcome, TraverseOutcome::timeout);
+  EXPECT_EQ(r.cycles.size(), 1u);
+}
+
+std::string refusal(const TraverseSettings& s) {
+  try {
+    validate(s);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(Traverse, BadSettingsAreRefusedNamingTheSetting) {
+  TraverseSettings s;
+  s.rocks = 0.7;
+  EXPECT_NE(refusal(s).find("rocks"), std::string::npos);
+  s = {};
+  s.slope_deg = 16.0;
+  EXPECT_NE(refusal(s).find("slope"), std::string::npos);
+  s = {};
+  s.goal_m = 2.0;
+  EXPECT_NE(refusal(s).find("goal"), std::string::npos);
+  s = {};
+  s.emergency_tilt_deg = 30.0;
+  EXPECT_NE(refusal(s).find("emergency tilt"), std::string::npos);
+  s = {};
+  s.light = "moonlight";
+  EXPECT_NE(refusal(s), "accepted");
+}
+
+} // namespace
+} // namespace marsokhod::eval
