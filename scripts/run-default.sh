@@ -2,7 +2,8 @@
 # The main job of `make run`: renders the default synthetic Mars scene with its ground truth,
 # runs one navigation cycle on the rendered pair, then the same cycle at 128 x 128 as OCCAM
 # processes on the emulated PC transputer card and on the rover's onboard computer, the paper's
-# timings from the model, and a campaign of module hangs and power losses under the overswitch.
+# timings from the model, a campaign of module hangs and power losses under the overswitch, and
+# one 80 m traverse on a rock-free site (craters only).
 set -eu
 marsokhod="$1"
 out="$2"
@@ -12,6 +13,7 @@ emulate_dir="$out/emulate-pc-card-seed3"
 onboard_dir="$out/emulate-onboard-seed3"
 reproduce_dir="$out/reproduce"
 campaign_dir="$out/campaign-hang-power"
+traverse_dir="$out/traverse-seed1"
 
 "$marsokhod" world --seed 3 --size 256 --out "$world_dir"
 echo
@@ -28,8 +30,10 @@ echo
 echo
 "$marsokhod" campaign campaigns/hang-power.toml --jobs 2 --out "$campaign_dir"
 echo
+"$marsokhod" traverse --seed 1 --rocks 0 --out "$traverse_dir"
+echo
 echo "make run: results are in $world_dir, $nav_dir, $emulate_dir, $onboard_dir, $reproduce_dir"
-echo "and $campaign_dir"
+echo "$campaign_dir and $traverse_dir"
 echo "  $world_dir:"
 echo "    left.png / right.png              the rendered stereo pair"
 echo "    gt_disparity.png, gt_range.png    ground truth, false colour with a legend"
@@ -54,3 +58,6 @@ echo "    summary.md / .json                1,000 module hangs and power losses 
 echo "                                      detection, failover to a spare, the unsafe rate"
 echo "    outcomes.png, latency.png         outcomes by fault kind, detection latency"
 echo "    runs.jsonl                        one record per run; campaign --replay K repeats one"
+echo "  $traverse_dir:"
+echo "    map.png                           an 80 m course driven cycle after cycle, from above"
+echo "    traverse.json, cycles.jsonl       the outcome, distances, stops, and each cycle"

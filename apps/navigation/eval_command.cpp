@@ -9,13 +9,15 @@
 
 namespace marsokhod::apps {
 
-Command add_stereo_evaluation(CLI::App& parent);  // eval_stereo_command.cpp
-Command add_terrain_evaluation(CLI::App& parent); // eval_terrain_command.cpp
+Command add_stereo_evaluation(CLI::App& parent);   // eval_stereo_command.cpp
+Command add_terrain_evaluation(CLI::App& parent);  // eval_terrain_command.cpp
+Command add_traverse_evaluation(CLI::App& parent); // traverse/eval_traverse_command.cpp
 
 namespace {
 
 // Every evaluation, in --help order.
-const std::vector<CommandFactory> kEvaluations = {add_stereo_evaluation, add_terrain_evaluation};
+const std::vector<CommandFactory> kEvaluations = {add_stereo_evaluation, add_terrain_evaluation,
+                                                  add_traverse_evaluation};
 
 // Bad option values are usage errors (exit 2). Bad files and data (EvaluationError) reach the
 // command line as any other runtime error does, and exit 1.

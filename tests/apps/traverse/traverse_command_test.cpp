@@ -3,11 +3,13 @@
 
 #include "marsokhod/imaging/image/image_io.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <variant>
 
@@ -65,6 +67,43 @@ TEST(TraverseCommand, OptionsOutOfRangeAreUsageErrorsNamingTheOption) {
   for (const std::string option : {"--rocks 0.6", "--slope 20", "--goal-m 2", "--light dusk",
                                    "--size 16", "--max-cycles -1", "--seed x"}) {
     const auto result = run_marsokhod("traverse " + option);
+    EXPECT_EQ(result.exit_code, 2) << option;
+    const std::string name = option.substr(0, option.find(' '));
+    EXPECT_NE(result.err.find(name), std::string::npos) << option << ": " << result.err;
+  }
+}
+
+std::string read_all(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(EvalTraverseCommand, TrialsAreTheSameForOneAndTwoJobs) {
+  std::string trials[2];
+  for (const int jobs : {1, 2}) {
+    const std::filesystem::path dir = scratch(fmt::format("sweep-{}", jobs));
+    const auto result = run_marsokhod(fmt::format(
+        "eval traverse --seeds 1..2 --rocks 0,0.1 --goal-m 10 --jobs {} --out '{}' --json", jobs,
+        dir.string()));
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const auto summary = nlohmann::json::parse(result.out);
+    EXPECT_EQ(summary["trials"], 4);
+    ASSERT_EQ(summary["by_rocks"].size(), 2u);
+    for (const char* key : {"rocks", "trials", "outcomes", "success_rate", "success_ci95", "spl",
+                            "unsafe_trials", "emergency_stops_per_100m", "hand_overs_per_100m",
+                            "metres_per_hour", "metres_per_hour_driving"})
+      EXPECT_TRUE(summary["by_rocks"][0].contains(key)) << key;
+    EXPECT_TRUE(std::filesystem::exists(dir / "success.png"));
+    trials[jobs - 1] = read_all(dir / "trials.jsonl");
+  }
+  EXPECT_FALSE(trials[0].empty());
+  EXPECT_EQ(trials[0], trials[1]);
+}
+
+TEST(EvalTraverseCommand, MalformedRockListsAndSeedsAreUsageErrors) {
+  for (const std::string option :
+       {"--rocks 0,,0.1", "--rocks 0.7", "--rocks x", "--rocks ''", "--seeds 5..3", "--jobs 0"}) {
+    const auto result = run_marsokhod("eval traverse " + option);
     EXPECT_EQ(result.exit_code, 2) << option;
     const std::string name = option.substr(0, option.find(' '));
     EXPECT_NE(result.err.find(name), std::string::npos) << option << ": " << result.err;
