@@ -1,6 +1,7 @@
 // `marsokhod traverse`: one course driven cycle after cycle, its map and records.
 #include "cli/command.hpp"
 #include "cli/option_checks.hpp"
+#include "navigation/nav_outputs.hpp"
 
 #include "marsokhod/eval/traverse/traverse.hpp"
 #include "marsokhod/eval/traverse/traverse_json.hpp"
@@ -58,7 +59,7 @@ void print_summary(const eval::TraverseResult& r, const std::string& out) {
   for (const eval::UnsafeEvent& e : r.unsafe_events)
     fmt::print("unsafe at ({:.2f}, {:.2f}): {}\n", e.x_m, e.y_m, e.why);
   if (!out.empty())
-    fmt::print("results in {}/ (map.png, traverse.json, cycles.jsonl)\n", out);
+    fmt::print("results in {}/ (map.png, traverse.json, cycles.jsonl, views/cycle-NNN.png)\n", out);
 }
 
 void add_options(CLI::App* app, TraverseCli& cli) {
@@ -86,8 +87,8 @@ void add_options(CLI::App* app, TraverseCli& cli) {
       ->transform(integer_between(0, 10000))
       ->capture_default_str();
   app->add_option("--out", cli.out,
-                  "Output folder (created if missing): map.png, traverse.json, "
-                  "cycles.jsonl");
+                  "Output folder (created if missing): map.png, traverse.json, cycles.jsonl, and "
+                  "views/cycle-NNN.png (each cycle's left image with its path)");
   app->add_flag("--json", cli.json, "Print traverse.json on stdout instead of the summary");
 }
 
@@ -113,11 +114,22 @@ Command make_traverse_command(CLI::App& parent) {
               imaging::prepare_output_folder(cli->out);
             const world::Terrain terrain =
                 world::Terrain::generate(eval::traverse_site(cli->settings));
+            const std::filesystem::path views = cli->out.empty()
+                                                    ? std::filesystem::path()
+                                                    : std::filesystem::path(cli->out) / "views";
+            if (!views.empty())
+              imaging::prepare_output_folder(views);
             const eval::TraverseResult result = eval::run_traverse(
                 terrain, cli->settings,
                 [live](const eval::TraverseCycle& cycle, const eval::TraverseResult& partial) {
                   if (live)
                     fmt::print(stderr, "{}\n", cycle_line(cycle, partial));
+                },
+                [&views](int cycle, const imaging::Image<std::uint8_t>& left,
+                         const nav::NavigationResult& navigation) {
+                  if (!views.empty())
+                    imaging::write_image(views / fmt::format("cycle-{:03}.png", cycle),
+                                         path_overlay(left, navigation).view());
                 });
             if (!cli->out.empty())
               write_outputs(cli->out, terrain, result);

@@ -58,7 +58,8 @@ std::pair<double, double> target_range(const nav::MotionAction& action, double g
 
 class Loop {
 public:
-  Loop(const TraverseSettings& s, const world::Terrain& terrain) : s_(s), course_(s, terrain) {
+  Loop(const TraverseSettings& s, const world::Terrain& terrain, const CycleView& view)
+      : s_(s), course_(s, terrain), view_(view) {
     result_.settings = s;
     result_.start = {-0.5 * s.goal_m, 0.0, 0.0};
     result_.goal = Eigen::Vector2d(0.5 * s.goal_m, 0.0);
@@ -145,6 +146,8 @@ private:
     cycle.host_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     result_.host_seconds += cycle.host_seconds;
+    if (view_)
+      view_(cycle.index, pair.left, nav);
     return nav;
   }
 
@@ -204,6 +207,7 @@ private:
 
   const TraverseSettings& s_;
   Course course_;
+  const CycleView& view_;
   TraverseResult result_;
   world::RoverPose pose_;
   GroundDriveLimits limits_;
@@ -272,9 +276,9 @@ world::TerrainSettings traverse_site(const TraverseSettings& s) {
 }
 
 TraverseResult run_traverse(const world::Terrain& terrain, const TraverseSettings& settings,
-                            const TraverseProgress& progress) {
+                            const TraverseProgress& progress, const CycleView& view) {
   validate(settings);
-  return Loop(settings, terrain).run(progress);
+  return Loop(settings, terrain, view).run(progress);
 }
 
 TraverseResult run_traverse(const TraverseSettings& settings, const TraverseProgress& progress) {

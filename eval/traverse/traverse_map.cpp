@@ -15,6 +15,8 @@ constexpr Rgb kTrack{255, 220, 0};
 constexpr Rgb kStop{255, 0, 255};
 constexpr Rgb kStart{0, 230, 0};
 constexpr Rgb kGoal{255, 255, 255};
+// Ground shown around the course, its plans and its tracks.
+constexpr double kMapMarginM = 5.0;
 
 // Map pixel <-> world: column from the west edge, row from the north edge.
 struct MapFrame {
@@ -102,13 +104,37 @@ Rgb outcome_colour(TraverseOutcome outcome) {
   return {255, 150, 0};
 }
 
+// The map's frame: every point of the course, its plans and tracks, kMapMarginM around them,
+// within the site.
+MapFrame frame_of(const world::Terrain& terrain, const TraverseResult& result) {
+  Eigen::Vector2d low(result.start.x, result.start.y);
+  Eigen::Vector2d high = low;
+  const auto include = [&](const Eigen::Vector2d& p) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  };
+  include(result.goal);
+  for (const TraverseCycle& cycle : result.cycles) {
+    for (const Eigen::Vector2d& p : cycle.planned)
+      include(p);
+    for (const Eigen::Vector2d& p : cycle.track)
+      include(p);
+  }
+  const double half = 0.5 * terrain.settings.size_m;
+  const Eigen::Vector2d edge(half, half);
+  low = (low - Eigen::Vector2d::Constant(kMapMarginM)).cwiseMax(-edge);
+  high = (high + Eigen::Vector2d::Constant(kMapMarginM)).cwiseMin(edge);
+  MapFrame f{low.x(), high.y(), 0, 0};
+  f.width = std::max(1, static_cast<int>(std::lround((high.x() - low.x()) / kTraverseMapCellM)));
+  f.height = std::max(1, static_cast<int>(std::lround((high.y() - low.y()) / kTraverseMapCellM)));
+  return f;
+}
+
 } // namespace
 
 imaging::Image<std::uint8_t> traverse_map(const world::Terrain& terrain,
                                           const TraverseResult& result) {
-  const double half = 0.5 * terrain.settings.size_m;
-  MapFrame f{-half, half, 0, 0};
-  f.width = f.height = static_cast<int>(std::lround(terrain.settings.size_m / kTraverseMapCellM));
+  const MapFrame f = frame_of(terrain, result);
   imaging::Image<std::uint8_t> map(f.width, f.height, 3, 0);
   hillshade(map, f, terrain);
   for (const TraverseCycle& cycle : result.cycles)
@@ -126,13 +152,16 @@ imaging::Image<std::uint8_t> traverse_map(const world::Terrain& terrain,
   square(map, f, Eigen::Vector2d(result.start.x, result.start.y), 5, kStart);
   circle(map, f, result.goal, result.settings.goal_tolerance_m, kGoal);
   const Rgb border = outcome_colour(result.outcome);
-  for (int i = 0; i < 6; ++i)
+  for (int i = 0; i < 6; ++i) {
     for (int x = 0; x < f.width; ++x) {
       put(map, x, i, border);
       put(map, x, f.height - 1 - i, border);
-      put(map, i, x, border);
-      put(map, f.width - 1 - i, x, border);
     }
+    for (int y = 0; y < f.height; ++y) {
+      put(map, i, y, border);
+      put(map, f.width - 1 - i, y, border);
+    }
+  }
   return map;
 }
 

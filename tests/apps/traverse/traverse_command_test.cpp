@@ -49,8 +49,12 @@ TEST(TraverseCommand, WritesTheMapTheCyclesAndTheSummary) {
   const imaging::AnyImage map = imaging::read_image(dir / "map.png");
   const auto* rgb = std::get_if<imaging::Image<std::uint8_t>>(&map);
   ASSERT_NE(rgb, nullptr);
-  EXPECT_EQ(rgb->width(), 400); // (20 m + 2 x 10 m) at 0.1 m a pixel
+  // From 5 m west of the start to 5 m east of the goal, 20 m apart, at 0.1 m a pixel.
+  EXPECT_EQ(rgb->width(), 300);
   EXPECT_EQ(rgb->channels(), 3);
+  for (int cycle = 0; cycle < json["cycles"]; ++cycle)
+    EXPECT_TRUE(std::filesystem::exists(dir / "views" / fmt::format("cycle-{:03}.png", cycle)))
+        << cycle;
 }
 
 TEST(TraverseCommand, AnOutputFolderThatCannotBeMadeIsARuntimeErrorNamingIt) {

@@ -2,8 +2,10 @@
 // scheme, judged on the true ground.
 #pragma once
 
+#include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/imaging/rig/chassis.hpp"
 #include "marsokhod/nav/cycle/motion_scheme.hpp"
+#include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav/path/drive_commands.hpp"
 #include "marsokhod/world/scene/rover_placement.hpp"
 #include "marsokhod/world/terrain/terrain.hpp"
@@ -99,6 +101,9 @@ struct TraverseResult {
 
 /// Called after each cycle.
 using TraverseProgress = std::function<void(const TraverseCycle&, const TraverseResult&)>;
+/// Called with each cycle's left image and navigation, for pictures of what the rover saw.
+using CycleView = std::function<void(int cycle, const imaging::Image<std::uint8_t>& left,
+                                     const nav::NavigationResult& navigation)>;
 
 /// The course's site: goal_m + 20 m a side, the seed, rocks and slope of the settings, the clear
 /// disc around the start (the rover at the west end facing east, the goal goal_m east of it).
@@ -110,7 +115,7 @@ world::TerrainSettings traverse_site(const TraverseSettings& settings);
 /// cycles, until the goal, a hand-over, a safety violation or max_cycles. Byte-identical for
 /// identical settings. Throws std::invalid_argument for bad settings.
 TraverseResult run_traverse(const world::Terrain& terrain, const TraverseSettings& settings,
-                            const TraverseProgress& progress = {});
+                            const TraverseProgress& progress = {}, const CycleView& view = {});
 /// The same on a site generated from traverse_site(settings).
 TraverseResult run_traverse(const TraverseSettings& settings,
                             const TraverseProgress& progress = {});

@@ -13,7 +13,8 @@ namespace marsokhod::eval {
 /// Ground per map pixel.
 inline constexpr double kTraverseMapCellM = 0.10;
 
-/// An RGB map of the course at kTraverseMapCellM a pixel, north up: the terrain hillshaded
+/// An RGB map of the course at kTraverseMapCellM a pixel, north up, over the course's start,
+/// goal, plans and tracks with 5 m around them (within the site): the terrain hillshaded
 /// (sun from the north-west), true obstacles red, each cycle's planned path blue, the driven
 /// track yellow, emergency stops magenta squares, unsafe events red crosses, the start green
 /// and the goal (its tolerance circle) white; the border shows the outcome (green success,
