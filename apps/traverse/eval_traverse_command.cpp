@@ -87,6 +87,8 @@ int run(SweepCli& cli) {
   cli.sweep.first_seed = seeds.first;
   cli.sweep.last_seed = seeds.last;
   cli.sweep.rocks = rock_list(cli.rocks);
+  if (cli.sweep.course.platform == "onboard")
+    cli.sweep.course.image_px = 128; // what its two 256 KB modules hold
   const std::filesystem::path out(cli.out);
   imaging::prepare_output_folder(out);
   imaging::prepare_output_folder(out / "failed");
@@ -140,6 +142,11 @@ Command add_traverse_evaluation(CLI::App& parent) {
       ->capture_default_str();
   app->add_option("--light", s.light, "Lighting preset")
       ->check(CLI::IsMember({"high-sun", "overexposed", "dark-wet", "low-sun"}))
+      ->capture_default_str();
+  app->add_option("--platform", s.platform,
+                  "Where each cycle's navigation runs: native, or emulated on pc-card or onboard "
+                  "(onboard at 128 x 128)")
+      ->check(CLI::IsMember({"native", "pc-card", "onboard"}))
       ->capture_default_str();
   app->add_option("--goal-m", s.goal_m, "Straight-line distance from the start to the goal, m")
       ->check(real_between(5.0, 180.0))

@@ -21,6 +21,9 @@
 namespace marsokhod::apps {
 namespace {
 
+// The image size the onboard computer's modules hold (docs/emulated-navigation.md).
+constexpr int kOnboardImagePx = 128;
+
 struct TraverseCli {
   eval::TraverseSettings settings;
   std::string out;
@@ -52,10 +55,10 @@ void write_outputs(const std::filesystem::path& folder, const world::Terrain& te
 void print_summary(const eval::TraverseResult& r, const std::string& out) {
   fmt::print("outcome {}: {:.1f} m driven in {} cycles, {:.1f} m from the goal; path efficiency "
              "{:.2f}; {} emergency stops, {} hand-overs, {} unsafe events; mission {:.0f} s "
-             "(driving {:.0f} s)\n",
+             "(driving {:.0f} s, navigating {:.0f} s on {})\n",
              eval::to_string(r.outcome), r.distance_m, r.cycles.size(), r.goal_left_m,
              r.path_efficiency(), r.emergency_stops, r.hand_overs, r.unsafe_events.size(),
-             r.mission_seconds(), r.driving_seconds);
+             r.mission_seconds(), r.driving_seconds, r.compute_seconds, r.settings.platform);
   for (const eval::UnsafeEvent& e : r.unsafe_events)
     fmt::print("unsafe at ({:.2f}, {:.2f}): {}\n", e.x_m, e.y_m, e.why);
   if (!out.empty())
@@ -76,10 +79,17 @@ void add_options(CLI::App* app, TraverseCli& cli) {
   app->add_option("--light", s.light, "Lighting preset")
       ->check(CLI::IsMember({"high-sun", "overexposed", "dark-wet", "low-sun"}))
       ->capture_default_str();
+  app->add_option("--platform", s.platform,
+                  "Where each cycle's navigation runs: native, or emulated on pc-card or onboard "
+                  "(the emulated cycle time counts as mission time)")
+      ->check(CLI::IsMember({"native", "pc-card", "onboard"}))
+      ->capture_default_str();
   app->add_option("--goal-m", s.goal_m, "Straight-line distance from the start to the goal, m")
       ->check(real_between(5.0, 180.0))
       ->capture_default_str();
-  app->add_option("--size", s.image_px, "Stereo image width and height, pixels")
+  app->add_option("--size", s.image_px,
+                  "Stereo image width and height, pixels (onboard: 128 unless given, the size "
+                  "its two 256 KB modules hold)")
       ->transform(integer_between(64, 512))
       ->capture_default_str();
   app->add_option("--max-cycles", s.max_cycles,
@@ -107,7 +117,9 @@ Command make_traverse_command(CLI::App& parent) {
               "(the footprint on a true obstacle, or a tilt over 25 deg), timeout. See "
               "docs/traverse.md.");
   add_options(app, *cli);
-  return {app, [cli] {
+  return {app, [cli, app] {
+            if (cli->settings.platform == "onboard" && app->count("--size") == 0)
+              cli->settings.image_px = kOnboardImagePx;
             const bool live = !cli->json && ::isatty(STDERR_FILENO) != 0;
             // A folder that cannot be made is refused before the drive, not after it.
             if (!cli->out.empty())

@@ -1,9 +1,12 @@
 // The traverse loop: render, navigate, drive on the true ground, and the motion scheme between.
 #include "marsokhod/eval/traverse/traverse.hpp"
 
+#include "marsokhod/emulator/kernel/time.hpp"
+#include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
 #include "marsokhod/eval/traverse/ground_drive.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
+#include "marsokhod/nav_program/run/navigation_program.hpp"
 #include "marsokhod/world/lighting/lit_surface.hpp"
 #include "marsokhod/world/render/renderer.hpp"
 
@@ -48,6 +51,22 @@ struct Course {
         renderer(terrain) {}
 };
 
+// The emulated computer a cycle runs on, when not native.
+struct EmulatedComputer {
+  emulator::PlatformSpec platform;
+  nav_program::Placement placement;
+
+  explicit EmulatedComputer(const std::string& name)
+      : platform(emulator::load_named_platform(name)),
+        placement(nav_program::load_program_placement(platform)) {}
+};
+
+std::optional<EmulatedComputer> computer_for(const TraverseSettings& s) {
+  if (s.platform == "native")
+    return std::nullopt;
+  return EmulatedComputer(s.platform);
+}
+
 // The destination range: the scheme's, drawn in when the goal is nearer than its far end.
 std::pair<double, double> target_range(const nav::MotionAction& action, double goal_left_m) {
   if (goal_left_m >= action.plan_max_m)
@@ -59,7 +78,7 @@ std::pair<double, double> target_range(const nav::MotionAction& action, double g
 class Loop {
 public:
   Loop(const TraverseSettings& s, const world::Terrain& terrain, const CycleView& view)
-      : s_(s), course_(s, terrain), view_(view) {
+      : s_(s), course_(s, terrain), computer_(computer_for(s)), view_(view) {
     result_.settings = s;
     result_.start = {-0.5 * s.goal_m, 0.0, 0.0};
     result_.goal = Eigen::Vector2d(0.5 * s.goal_m, 0.0);
@@ -142,13 +161,35 @@ private:
     options.planner.heading_deg =
         wrap_deg(std::atan2(to_goal.y(), to_goal.x()) * kDegreesPerRadian - pose_.heading_deg);
     const auto started = std::chrono::steady_clock::now();
-    nav::NavigationResult nav = nav::navigate(pair.left, pair.right, course_.rig, options);
+    nav::NavigationResult nav = computer_
+                                    ? emulate(pair, options, cycle)
+                                    : nav::navigate(pair.left, pair.right, course_.rig, options);
     cycle.host_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     result_.host_seconds += cycle.host_seconds;
     if (view_)
       view_(cycle.index, pair.left, nav);
     return nav;
+  }
+
+  // The cycle on the emulated computer; its emulated time is mission time.
+  nav::NavigationResult emulate(const world::StereoImages& pair,
+                                const nav::NavigationOptions& options, TraverseCycle& cycle) {
+    nav_program::CycleInput input{pair.left, pair.right, &course_.rig, options, {}};
+    nav_program::CycleSetup setup;
+    setup.platform = &computer_->platform;
+    setup.placement = &computer_->placement;
+    const nav_program::CycleEmulation run = nav_program::emulate_navigation_cycle(input, setup);
+    cycle.compute_seconds = emulator::to_seconds(run.emulated);
+    result_.compute_seconds += cycle.compute_seconds;
+    if (run.result)
+      return *run.result;
+    nav::NavigationResult none;
+    none.plan.found = false;
+    none.plan.reason =
+        run.memory_fault ? "the emulated cycle stopped: " + nav_program::describe(*run.memory_fault)
+                         : "the emulated cycle gave no result";
+    return none;
   }
 
   void book_plan(const nav::NavigationResult& nav, TraverseCycle& cycle) const {
@@ -207,6 +248,7 @@ private:
 
   const TraverseSettings& s_;
   Course course_;
+  std::optional<EmulatedComputer> computer_;
   const CycleView& view_;
   TraverseResult result_;
   world::RoverPose pose_;
@@ -240,6 +282,9 @@ void validate(const TraverseSettings& s) {
     throw std::invalid_argument("traverse: max_cycles must not be negative");
   imaging::validate(s.chassis);
   world::parse_light_preset(s.light);
+  if (s.platform != "native" && s.platform != "pc-card" && s.platform != "onboard")
+    throw std::invalid_argument(
+        fmt::format("traverse: platform '{}' is not one of native, pc-card, onboard", s.platform));
 }
 
 std::string_view to_string(TraverseOutcome outcome) {

@@ -30,7 +30,7 @@ json settings_json(const TraverseSettings& s) {
           {"read_every_m", s.read_every_m},
           {"drive_speed_m_s", s.drive_speed_m_s},
           {"turn_rate_deg_s", s.turn_rate_deg_s},
-          {"platform", "native"}};
+          {"platform", s.platform}};
 }
 
 } // namespace
@@ -46,7 +46,7 @@ json cycle_json(const TraverseCycle& c) {
   line["planned_m"] = c.planned_m;
   line["driven_m"] = c.driven_m;
   line["emergency_stop"] = c.emergency_stop;
-  line["compute_seconds"] = 0.0;
+  line["compute_seconds"] = c.compute_seconds;
   line["events"] = c.events;
   line["planned"] = points_json(c.planned);
   line["track"] = points_json(c.track);

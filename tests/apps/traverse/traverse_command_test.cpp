@@ -69,7 +69,7 @@ TEST(TraverseCommand, AnOutputFolderThatCannotBeMadeIsARuntimeErrorNamingIt) {
 
 TEST(TraverseCommand, OptionsOutOfRangeAreUsageErrorsNamingTheOption) {
   for (const std::string option : {"--rocks 0.6", "--slope 20", "--goal-m 2", "--light dusk",
-                                   "--size 16", "--max-cycles -1", "--seed x"}) {
+                                   "--size 16", "--max-cycles -1", "--seed x", "--platform cray"}) {
     const auto result = run_marsokhod("traverse " + option);
     EXPECT_EQ(result.exit_code, 2) << option;
     const std::string name = option.substr(0, option.find(' '));

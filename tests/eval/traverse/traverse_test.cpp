@@ -61,6 +61,39 @@ TEST(Traverse, CycleLimitEndsInTimeout) {
   EXPECT_EQ(r.cycles.size(), 1u);
 }
 
+// Natively the navigation takes no mission time; on the onboard computer each cycle's emulated
+// time is added to the driving.
+TEST(Traverse, EmulatedCyclesCountAsMissionTime) {
+  TraverseSettings s = short_bare_course();
+  s.goal_m = 10.0;
+  const TraverseResult native = run_traverse(s);
+  EXPECT_EQ(native.compute_seconds, 0.0);
+  EXPECT_EQ(native.mission_seconds(), native.driving_seconds);
+
+  s.platform = "onboard";
+  s.image_px = 128;
+  const TraverseResult onboard = run_traverse(s);
+  ASSERT_FALSE(onboard.cycles.empty());
+  double sum = 0.0;
+  for (const TraverseCycle& cycle : onboard.cycles) {
+    EXPECT_GT(cycle.compute_seconds, 1.0) << "cycle " << cycle.index; // seconds, not ms, on a T805
+    sum += cycle.compute_seconds;
+  }
+  EXPECT_DOUBLE_EQ(onboard.compute_seconds, sum);
+  EXPECT_DOUBLE_EQ(onboard.mission_seconds(), onboard.driving_seconds + sum);
+
+  // The emulated cycle runs the same navigation: at the same image size the rover plans and
+  // drives exactly as it does natively.
+  s.platform = "native";
+  const TraverseResult same_size = run_traverse(s);
+  ASSERT_EQ(same_size.cycles.size(), onboard.cycles.size());
+  for (std::size_t i = 0; i < onboard.cycles.size(); ++i) {
+    EXPECT_EQ(same_size.cycles[i].planned, onboard.cycles[i].planned) << "cycle " << i;
+    EXPECT_EQ(same_size.cycles[i].track, onboard.cycles[i].track) << "cycle " << i;
+  }
+  EXPECT_EQ(same_size.outcome, onboard.outcome);
+}
+
 std::string refusal(const TraverseSettings& s) {
   try {
     validate(s);
@@ -86,6 +119,9 @@ TEST(Traverse, BadSettingsAreRefusedNamingTheSetting) {
   s = {};
   s.light = "moonlight";
   EXPECT_NE(refusal(s), "accepted");
+  s = {};
+  s.platform = "cray";
+  EXPECT_NE(refusal(s).find("platform 'cray'"), std::string::npos);
 }
 
 } // namespace

@@ -25,6 +25,9 @@ struct TraverseSettings {
   double rocks = 0.10;    ///< Golombek-Rapp cumulative fractional area k
   double slope_deg = 2.0; ///< regional slope of the site
   std::string light = "high-sun";
+  /// Where each cycle's navigation runs: "native" (no mission time), or an emulated platform
+  /// ("pc-card", "onboard") whose emulated cycle time counts as mission time.
+  std::string platform = "native";
   double goal_m = 80.0; ///< straight-line distance from the start to the goal
   int image_px = 256;   ///< the stereo pair's width and height
   double goal_tolerance_m = 1.5;
@@ -71,7 +74,8 @@ struct TraverseCycle {
   std::vector<Eigen::Vector2d> planned; ///< the planned polyline, world frame
   std::vector<Eigen::Vector2d> track;   ///< the driven centre line, world frame
   bool emergency_stop = false;
-  double host_seconds = 0.0; ///< this machine's time for the navigation cycle (not mission time)
+  double host_seconds = 0.0;    ///< this machine's time for the navigation cycle (not mission time)
+  double compute_seconds = 0.0; ///< the emulated cycle's time (0 natively)
   std::vector<std::string> events;
 };
 
@@ -88,7 +92,7 @@ struct TraverseResult {
   int hand_overs = 0;
   std::vector<UnsafeEvent> unsafe_events;
   double driving_seconds = 0.0; ///< driving and turning at the chassis's speeds
-  /// The navigation's time as mission time: 0 natively (the emulated platforms count theirs).
+  /// The navigation's time as mission time: 0 natively, the emulated cycles' on a platform.
   double compute_seconds = 0.0;
   double host_seconds = 0.0; ///< this machine's time for all cycles (not deterministic)
   std::vector<TraverseCycle> cycles;
