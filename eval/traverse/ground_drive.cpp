@@ -14,6 +14,8 @@ namespace marsokhod::eval {
 namespace {
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
+// A reading over the threshold stops the rover when it is this much over the drive's first.
+constexpr double kTiltRiseDeg = 0.5;
 
 world::RoverPose to_world(const world::RoverPose& start, const imaging::PlanarPose& local) {
   const double h = start.heading_deg / kDegrees;
@@ -43,6 +45,9 @@ GroundDrive drive_on_ground(const world::Terrain& terrain, const world::RoverPos
   GroundDrive drive;
   drive.end = start;
   double next_reading = 0.0;
+  // The tilt the rover starts from: standing over the threshold already (after an emergency
+  // stop) is what the scheme's turn answers, not a new emergency.
+  std::optional<double> start_tilt;
   double last_heading = 0.0;
   for (const nav::DrivePose& local : poses) {
     const world::RoverPose pose = to_world(start, local.pose);
@@ -76,7 +81,9 @@ GroundDrive drive_on_ground(const world::Terrain& terrain, const world::RoverPos
       drive.unsafe_at = Eigen::Vector2d(pose.x, pose.y);
       return drive;
     }
-    if (tilt > limits.emergency_tilt_deg) {
+    if (!start_tilt)
+      start_tilt = tilt;
+    if (tilt > limits.emergency_tilt_deg && tilt > *start_tilt + kTiltRiseDeg) {
       drive.emergency_stop = true;
       drive.tilt_deg = tilt;
       drive.risen_side = attitude.roll_deg >= 0.0 ? nav::Side::left : nav::Side::right;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -62,18 +63,33 @@ TEST(GroundDrive, InclinometerStopsTheRoverClimbingARampSteeperThanTheThreshold)
   EXPECT_LE(drive.tilt_deg, 22.0 + 1e-6);
 }
 
+// Ground tilting sideways from 1 m ahead to 22 deg over 2 m, one side up.
+world::Terrain side_slope(double sign) {
+  return ground([sign](double x, double y) {
+    return sign * rise(22.0) * y * std::clamp((x - 1.0) / 2.0, 0.0, 1.0);
+  });
+}
+
 TEST(GroundDrive, EmergencyStopNamesTheSideThatRose) {
-  const world::Terrain left_up = ground([](double, double y) { return rise(22.0) * y; });
-  const GroundDrive left = drive_on_ground(left_up, {0.0, 0.0, 0.0}, kStraight6m, {}, {});
+  const GroundDrive left = drive_on_ground(side_slope(1.0), {0.0, 0.0, 0.0}, kStraight6m, {}, {});
   ASSERT_TRUE(left.emergency_stop);
   EXPECT_EQ(left.risen_side, nav::Side::left);
-  EXPECT_NEAR(left.driven_m, 0.0, 1e-9); // read at the start
-  EXPECT_NEAR(left.tilt_deg, 22.0, 0.01);
+  EXPECT_GT(left.tilt_deg, 20.0);
 
-  const world::Terrain right_up = ground([](double, double y) { return -rise(22.0) * y; });
-  const GroundDrive right = drive_on_ground(right_up, {0.0, 0.0, 0.0}, kStraight6m, {}, {});
+  const GroundDrive right = drive_on_ground(side_slope(-1.0), {0.0, 0.0, 0.0}, kStraight6m, {}, {});
   ASSERT_TRUE(right.emergency_stop);
   EXPECT_EQ(right.risen_side, nav::Side::right);
+}
+
+// Standing on a 22 deg side slope (after an emergency stop), the rover turns and drives on it:
+// the tilt does not rise, so no new emergency.
+TEST(GroundDrive, RoverAlreadyOverTheThresholdIsNotStoppedAgain) {
+  const world::Terrain plane = ground([](double, double y) { return rise(22.0) * y; });
+  const std::vector<nav::DriveCommand> turn_and_go{{-30.0, 2.0}};
+  const GroundDrive drive = drive_on_ground(plane, {0.0, 0.0, 0.0}, turn_and_go, {}, {});
+  EXPECT_FALSE(drive.emergency_stop);
+  EXPECT_FALSE(drive.unsafe);
+  EXPECT_NEAR(drive.driven_m, 2.0, 1e-9);
 }
 
 // A 0.4 m box (over the 0.30 m step) from x = 4: the obstacle map marks the ground within one

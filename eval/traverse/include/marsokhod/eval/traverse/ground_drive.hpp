@@ -47,7 +47,9 @@ double tilt_deg(double pitch_deg, double roll_deg);
 /// Executes `commands` (nav's convention: from the rover's pose, turn then drive) from `start`
 /// on the true terrain, at nav::drive_poses' sampling. The inclinometer (pitch and roll of the
 /// chassis settled on the six wheel contacts) is read at the start, every read_every_m and at
-/// every pose of a turn; a reading over emergency_tilt_deg stops the rover there. The drive is
+/// every pose of a turn; a reading over emergency_tilt_deg, and more than 0.5 deg over the
+/// drive's first reading (a rover already standing over the threshold after an emergency stop
+/// turns and drives away without stopping again), stops the rover there. The drive is
 /// unsafe when the footprint covers a true obstacle node (eval::judge_footprint) before the
 /// rover stops, or a reading is over tilt_limit_deg; the rover stops there too.
 GroundDrive drive_on_ground(const world::Terrain& terrain, const world::RoverPose& start,
