@@ -18,6 +18,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct SweepCli {
   std::string rocks = "0,0.05,0.10";
   std::string out = "out/eval-traverse";
   eval::TraverseSweep sweep;
+  std::optional<std::uint64_t> replay;
   bool json = false;
 };
 
@@ -89,6 +91,13 @@ int run(SweepCli& cli) {
   cli.sweep.rocks = rock_list(cli.rocks);
   if (cli.sweep.course.platform == "onboard")
     cli.sweep.course.image_px = 128; // what its two 256 KB modules hold
+  if (cli.replay) {
+    if (*cli.replay >= eval::sweep_trials(cli.sweep))
+      throw UsageError(fmt::format("--replay {}: the sweep has trials 0..{}", *cli.replay,
+                                   eval::sweep_trials(cli.sweep) - 1));
+    fmt::print("{}\n", eval::sweep_trial_line(cli.sweep, *cli.replay));
+    return kSuccess;
+  }
   const std::filesystem::path out(cli.out);
   imaging::prepare_output_folder(out);
   imaging::prepare_output_folder(out / "failed");
@@ -155,6 +164,9 @@ Command add_traverse_evaluation(CLI::App& parent) {
       ->transform(integer_between(1, 64))
       ->capture_default_str();
   app->add_option("--out", cli->out, "Output folder (created if missing)")->capture_default_str();
+  app->add_option("--replay", cli->replay,
+                  "Run trial K alone and print its trials.jsonl line (nothing is written)")
+      ->transform(integer_between<std::uint64_t>(0, 1000000));
   app->add_flag("--json", cli->json, "Print summary.json instead of the table");
   return {app, [cli] { return run(*cli); }};
 }

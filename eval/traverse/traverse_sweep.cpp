@@ -106,6 +106,14 @@ std::vector<std::string> run_sweep(const TraverseSweep& sweep,
       [&sweep](std::uint64_t trial) { return trial_line(sweep, trial); }, progress);
 }
 
+std::string sweep_trial_line(const TraverseSweep& sweep, std::uint64_t trial) {
+  validate(sweep);
+  if (trial >= sweep_trials(sweep))
+    throw std::invalid_argument(fmt::format("traverse sweep: trial {} is past the last, {}", trial,
+                                            sweep_trials(sweep) - 1));
+  return trial_line(sweep, trial);
+}
+
 std::vector<RockFigures> sweep_figures(const TraverseSweep& sweep,
                                        const std::vector<std::string>& lines) {
   std::vector<Tally> tallies(sweep.rocks.size());

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <variant>
 
@@ -102,11 +103,21 @@ TEST(EvalTraverseCommand, TrialsAreTheSameForOneAndTwoJobs) {
   }
   EXPECT_FALSE(trials[0].empty());
   EXPECT_EQ(trials[0], trials[1]);
+
+  // Trial 2 (rocks 0.1, seed 1) run alone gives its line byte for byte.
+  const auto replay =
+      run_marsokhod("eval traverse --seeds 1..2 --rocks 0,0.1 --goal-m 10 --replay 2");
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  std::istringstream lines(trials[0]);
+  std::string line;
+  for (int k = 0; k <= 2; ++k)
+    std::getline(lines, line);
+  EXPECT_EQ(replay.out, line + "\n");
 }
 
 TEST(EvalTraverseCommand, MalformedRockListsAndSeedsAreUsageErrors) {
-  for (const std::string option :
-       {"--rocks 0,,0.1", "--rocks 0.7", "--rocks x", "--rocks ''", "--seeds 5..3", "--jobs 0"}) {
+  for (const std::string option : {"--rocks 0,,0.1", "--rocks 0.7", "--rocks x", "--rocks ''",
+                                   "--seeds 5..3", "--jobs 0", "--replay 99"}) {
     const auto result = run_marsokhod("eval traverse " + option);
     EXPECT_EQ(result.exit_code, 2) << option;
     const std::string name = option.substr(0, option.find(' '));

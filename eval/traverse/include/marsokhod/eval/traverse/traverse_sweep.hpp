@@ -43,6 +43,9 @@ std::uint64_t sweep_trials(const TraverseSweep& sweep);
 std::vector<std::string> run_sweep(const TraverseSweep& sweep,
                                    const std::function<void(std::uint64_t)>& progress);
 
+/// Trial `trial` alone (< sweep_trials): the same line run_sweep writes for it.
+std::string sweep_trial_line(const TraverseSweep& sweep, std::uint64_t trial);
+
 /// The figures of one rock cover.
 struct RockFigures {
   double rocks = 0.0;
