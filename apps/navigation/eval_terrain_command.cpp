@@ -2,6 +2,7 @@
 
 #include "cli/command.hpp"
 #include "cli/option_checks.hpp"
+#include "navigation/seed_option.hpp"
 
 #include "marsokhod/eval/common/errors.hpp"
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
@@ -24,15 +25,6 @@ struct TerrainCli {
   eval::TerrainEvaluationOptions evaluation;
   bool json = false;
 };
-
-// A malformed range is a usage error naming the option.
-eval::SeedRange seed_range(const std::string& text) {
-  try {
-    return eval::parse_seed_range(text);
-  } catch (const eval::OptionError& error) {
-    throw UsageError(fmt::format("--seeds {}", error.what()));
-  }
-}
 
 nlohmann::ordered_json number_or_null(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
@@ -175,7 +167,7 @@ Command add_terrain_evaluation(CLI::App& parent) {
                   "zones judged against ground truth, ground-truth zones");
   app->add_flag("--json", cli->json, "Print one JSON object instead of a table");
   return {app, [cli] {
-            const eval::SeedRange range = seed_range(cli->seeds);
+            const eval::SeedRange range = seed_range_option(cli->seeds);
             const std::vector<eval::SeedOutcome> outcomes = eval::evaluate_seeds(
                 range, cli->evaluation,
                 [](std::uint64_t position, std::uint64_t count, std::uint64_t seed) {

@@ -3,8 +3,9 @@
 #include "cli/command.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/progress_bar.hpp"
+#include "navigation/seed_option.hpp"
+#include "traverse/course_options.hpp"
 
-#include "marsokhod/eval/common/errors.hpp"
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
 #include "marsokhod/eval/traverse/traverse_sweep.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
@@ -79,18 +80,12 @@ void print_table(const std::vector<eval::RockFigures>& figures) {
 }
 
 int run(SweepCli& cli) {
-  const eval::SeedRange seeds = [&] {
-    try {
-      return eval::parse_seed_range(cli.seeds);
-    } catch (const eval::OptionError& error) {
-      throw UsageError(fmt::format("--seeds {}", error.what()));
-    }
-  }();
+  const eval::SeedRange seeds = seed_range_option(cli.seeds);
   cli.sweep.first_seed = seeds.first;
   cli.sweep.last_seed = seeds.last;
   cli.sweep.rocks = rock_list(cli.rocks);
   if (cli.sweep.course.platform == "onboard")
-    cli.sweep.course.image_px = 128; // what its two 256 KB modules hold
+    cli.sweep.course.image_px = kOnboardImagePx;
   if (cli.replay) {
     if (*cli.replay >= eval::sweep_trials(cli.sweep))
       throw UsageError(fmt::format("--replay {}: the sweep has trials 0..{}", *cli.replay,
@@ -145,21 +140,7 @@ Command add_traverse_evaluation(CLI::App& parent) {
       ->capture_default_str();
   app->add_option("--rocks", cli->rocks, "Rock covers k, comma-separated, each 0..0.5")
       ->capture_default_str();
-  eval::TraverseSettings& s = cli->sweep.course;
-  app->add_option("--slope", s.slope_deg, "Regional slope of the sites, degrees")
-      ->check(real_between(0.0, 15.0))
-      ->capture_default_str();
-  app->add_option("--light", s.light, "Lighting preset")
-      ->check(CLI::IsMember({"high-sun", "overexposed", "dark-wet", "low-sun"}))
-      ->capture_default_str();
-  app->add_option("--platform", s.platform,
-                  "Where each cycle's navigation runs: native, or emulated on pc-card or onboard "
-                  "(onboard at 128 x 128)")
-      ->check(CLI::IsMember({"native", "pc-card", "onboard"}))
-      ->capture_default_str();
-  app->add_option("--goal-m", s.goal_m, "Straight-line distance from the start to the goal, m")
-      ->check(real_between(5.0, 180.0))
-      ->capture_default_str();
+  add_course_options(app, cli->sweep.course);
   app->add_option("--jobs", cli->sweep.jobs, "Worker processes")
       ->transform(integer_between(1, 64))
       ->capture_default_str();

@@ -2,6 +2,7 @@
 #include "cli/command.hpp"
 #include "cli/option_checks.hpp"
 #include "navigation/nav_outputs.hpp"
+#include "traverse/course_options.hpp"
 
 #include "marsokhod/eval/traverse/traverse.hpp"
 #include "marsokhod/eval/traverse/traverse_json.hpp"
@@ -20,9 +21,6 @@
 
 namespace marsokhod::apps {
 namespace {
-
-// The image size the onboard computer's modules hold (docs/emulated-navigation.md).
-constexpr int kOnboardImagePx = 128;
 
 struct TraverseCli {
   eval::TraverseSettings settings;
@@ -73,20 +71,7 @@ void add_options(CLI::App* app, TraverseCli& cli) {
   app->add_option("--rocks", s.rocks, "Rock cover k (Golombek-Rapp cumulative fractional area)")
       ->check(real_between(0.0, 0.5))
       ->capture_default_str();
-  app->add_option("--slope", s.slope_deg, "Regional slope of the site, degrees")
-      ->check(real_between(0.0, 15.0))
-      ->capture_default_str();
-  app->add_option("--light", s.light, "Lighting preset")
-      ->check(CLI::IsMember({"high-sun", "overexposed", "dark-wet", "low-sun"}))
-      ->capture_default_str();
-  app->add_option("--platform", s.platform,
-                  "Where each cycle's navigation runs: native, or emulated on pc-card or onboard "
-                  "(the emulated cycle time counts as mission time)")
-      ->check(CLI::IsMember({"native", "pc-card", "onboard"}))
-      ->capture_default_str();
-  app->add_option("--goal-m", s.goal_m, "Straight-line distance from the start to the goal, m")
-      ->check(real_between(5.0, 180.0))
-      ->capture_default_str();
+  add_course_options(app, s);
   app->add_option("--size", s.image_px,
                   "Stereo image width and height, pixels (onboard: 128 unless given, the size "
                   "its two 256 KB modules hold)")
@@ -126,23 +111,24 @@ Command make_traverse_command(CLI::App& parent) {
               imaging::prepare_output_folder(cli->out);
             const world::Terrain terrain =
                 world::Terrain::generate(eval::traverse_site(cli->settings));
-            const std::filesystem::path views = cli->out.empty()
-                                                    ? std::filesystem::path()
-                                                    : std::filesystem::path(cli->out) / "views";
-            if (!views.empty())
+            // Each cycle's view beside the records, when there is a folder for them.
+            eval::CycleView view;
+            if (!cli->out.empty()) {
+              const std::filesystem::path views = std::filesystem::path(cli->out) / "views";
               imaging::prepare_output_folder(views);
+              view = [views](int cycle, const imaging::Image<std::uint8_t>& left,
+                             const nav::NavigationResult& navigation) {
+                imaging::write_image(views / fmt::format("cycle-{:03}.png", cycle),
+                                     path_overlay(left, navigation).view());
+              };
+            }
             const eval::TraverseResult result = eval::run_traverse(
                 terrain, cli->settings,
                 [live](const eval::TraverseCycle& cycle, const eval::TraverseResult& partial) {
                   if (live)
                     fmt::print(stderr, "{}\n", cycle_line(cycle, partial));
                 },
-                [&views](int cycle, const imaging::Image<std::uint8_t>& left,
-                         const nav::NavigationResult& navigation) {
-                  if (!views.empty())
-                    imaging::write_image(views / fmt::format("cycle-{:03}.png", cycle),
-                                         path_overlay(left, navigation).view());
-                });
+                view);
             if (!cli->out.empty())
               write_outputs(cli->out, terrain, result);
             if (cli->json)

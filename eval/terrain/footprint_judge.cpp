@@ -52,26 +52,32 @@ std::optional<Eigen::Vector2d> obstacle_under(const world::Terrain& terrain,
 
 } // namespace
 
+std::optional<FootprintHit> footprint_hit_at(const world::Terrain& terrain,
+                                             const world::RoverPlacement& placement,
+                                             const nav::DrivePose& pose,
+                                             const imaging::Chassis& chassis) {
+  const WorldFrame frame{placement.level_to_world,
+                         placement.pose.heading_deg * std::numbers::pi / 180.0};
+  const std::optional<Eigen::Vector2d> node =
+      obstacle_under(terrain, chassis, to_world(frame, pose.pose));
+  if (!node)
+    return std::nullopt;
+  const Eigen::Isometry3d world_to_level = placement.level_to_world.inverse();
+  const Eigen::Vector3d level = world_to_level * on_ground(terrain, *node);
+  FootprintHit hit{level.x(), level.y(), level.z(), std::hypot(level.x(), level.y()), pose, {}, {}};
+  const auto corners = imaging::footprint_corners(chassis, to_world(frame, pose.pose));
+  for (std::size_t c = 0; c < corners.size(); ++c)
+    hit.corners[c] = world_to_level * on_ground(terrain, corners[c]);
+  return hit;
+}
+
 FootprintVerdict judge_footprint(const world::Terrain& terrain,
                                  const world::RoverPlacement& placement,
                                  std::span<const nav::DriveCommand> commands,
                                  const imaging::Chassis& chassis) {
-  const WorldFrame frame{placement.level_to_world,
-                         placement.pose.heading_deg * std::numbers::pi / 180.0};
-  const Eigen::Isometry3d world_to_level = placement.level_to_world.inverse();
-  for (const nav::DrivePose& pose : nav::drive_poses(commands)) {
-    const std::optional<Eigen::Vector2d> node =
-        obstacle_under(terrain, chassis, to_world(frame, pose.pose));
-    if (!node)
-      continue;
-    const Eigen::Vector3d level = world_to_level * on_ground(terrain, *node);
-    FootprintHit hit{level.x(), level.y(), level.z(), std::hypot(level.x(), level.y()),
-                     pose,      {},        {}};
-    const auto corners = imaging::footprint_corners(chassis, to_world(frame, pose.pose));
-    for (std::size_t c = 0; c < corners.size(); ++c)
-      hit.corners[c] = world_to_level * on_ground(terrain, corners[c]);
-    return {hit};
-  }
+  for (const nav::DrivePose& pose : nav::drive_poses(commands))
+    if (auto hit = footprint_hit_at(terrain, placement, pose, chassis))
+      return {std::move(hit)};
   return {};
 }
 

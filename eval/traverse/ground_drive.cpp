@@ -17,16 +17,9 @@ constexpr double kDegrees = 180.0 / std::numbers::pi;
 // A reading over the threshold stops the rover when it is this much over the drive's first.
 constexpr double kTiltRiseDeg = 0.5;
 
-world::RoverPose to_world(const world::RoverPose& start, const imaging::PlanarPose& local) {
-  const double h = start.heading_deg / kDegrees;
-  return {start.x + local.x * std::cos(h) - local.y * std::sin(h),
-          start.y + local.x * std::sin(h) + local.y * std::cos(h),
-          start.heading_deg + local.heading_rad * kDegrees};
-}
-
-bool same_pose(const nav::DrivePose& a, const nav::DrivePose& b) {
-  return a.command == b.command && a.turning == b.turning && a.along_m == b.along_m &&
-         a.pose.heading_rad == b.pose.heading_rad;
+world::RoverPose to_world(const world::RoverPlacement& start, const imaging::PlanarPose& local) {
+  const Eigen::Vector3d p = start.level_to_world * Eigen::Vector3d(local.x, local.y, 0.0);
+  return {p.x(), p.y(), start.pose.heading_deg + local.heading_rad * kDegrees};
 }
 
 } // namespace
@@ -40,8 +33,6 @@ GroundDrive drive_on_ground(const world::Terrain& terrain, const world::RoverPos
                             std::span<const nav::DriveCommand> commands,
                             const imaging::Chassis& chassis, const GroundDriveLimits& limits) {
   const world::RoverPlacement placement = world::place_rover(terrain.height, start, chassis);
-  const FootprintVerdict verdict = judge_footprint(terrain, placement, commands, chassis);
-  const std::vector<nav::DrivePose> poses = nav::drive_poses(commands);
   GroundDrive drive;
   drive.end = start;
   double next_reading = 0.0;
@@ -49,22 +40,17 @@ GroundDrive drive_on_ground(const world::Terrain& terrain, const world::RoverPos
   // stop) is what the scheme's turn answers, not a new emergency.
   std::optional<double> start_tilt;
   double last_heading = 0.0;
-  for (const nav::DrivePose& local : poses) {
-    const world::RoverPose pose = to_world(start, local.pose);
+  for (const nav::DrivePose& local : nav::drive_poses(commands)) {
+    const world::RoverPose pose = to_world(placement, local.pose);
     drive.turned_deg += std::abs(local.pose.heading_rad - last_heading) * kDegrees;
     last_heading = local.pose.heading_rad;
     drive.end = pose;
     drive.driven_m = local.along_m;
-    if (verdict.hit && same_pose(local, verdict.hit->pose)) {
-      drive.unsafe =
-          fmt::format("the footprint covers a true obstacle ({})", describe(*verdict.hit));
+    // Nodes beyond the site count as obstacles, so leaving the site is met here too.
+    if (const auto hit = footprint_hit_at(terrain, placement, local, chassis)) {
+      drive.unsafe = fmt::format("the footprint covers a true obstacle ({})", describe(*hit));
       drive.unsafe_at = Eigen::Vector2d(pose.x, pose.y);
       drive.track.emplace_back(pose.x, pose.y);
-      return drive;
-    }
-    if (!terrain.height.contains(pose.x, pose.y)) {
-      drive.unsafe = "the rover left the site";
-      drive.unsafe_at = Eigen::Vector2d(pose.x, pose.y);
       return drive;
     }
     if (!local.turning && local.along_m + 1e-9 < next_reading)

@@ -116,9 +116,8 @@ private:
     return std::move(result_);
   }
 
-  // Drives on the true ground and books it; the outcome when the drive ends the traverse.
-  std::optional<TraverseOutcome> drive(std::span<const nav::DriveCommand> commands,
-                                       TraverseCycle& cycle) {
+  // Drives on the true ground and books it.
+  GroundDrive drive(std::span<const nav::DriveCommand> commands, TraverseCycle& cycle) {
     const GroundDrive drive =
         drive_on_ground(course_.terrain, pose_, commands, s_.chassis, limits_);
     pose_ = drive.end;
@@ -127,14 +126,10 @@ private:
     result_.distance_m += drive.driven_m;
     result_.driving_seconds +=
         drive.driven_m / s_.drive_speed_m_s + drive.turned_deg / s_.turn_rate_deg_s;
-    last_drive_ = drive;
     if (drive.unsafe) {
       result_.unsafe_events.push_back({drive.unsafe_at.x(), drive.unsafe_at.y(), *drive.unsafe});
       cycle.events.push_back("unsafe: " + *drive.unsafe);
-      return TraverseOutcome::unsafe;
     }
-    if (drive.at_goal)
-      return TraverseOutcome::success;
     if (drive.emergency_stop) {
       ++result_.emergency_stops;
       cycle.emergency_stop = true;
@@ -142,12 +137,20 @@ private:
                                          drive.tilt_deg,
                                          drive.risen_side == nav::Side::left ? "left" : "right"));
     }
+    return drive;
+  }
+
+  // The outcome when a drive ends the traverse.
+  static std::optional<TraverseOutcome> end_of(const GroundDrive& drive) {
+    if (drive.unsafe)
+      return TraverseOutcome::unsafe;
+    if (drive.at_goal)
+      return TraverseOutcome::success;
     return std::nullopt;
   }
 
-  nav::NavigationResult navigate(const nav::MotionAction& action, TraverseCycle& cycle) {
-    const world::RoverPlacement placement =
-        world::place_rover(course_.terrain.height, pose_, s_.chassis);
+  nav::NavigationResult navigate(const world::RoverPlacement& placement,
+                                 const nav::MotionAction& action, TraverseCycle& cycle) {
     world::RenderOptions render;
     render.noise_seed = s_.seed * 100003u + static_cast<std::uint64_t>(cycle.index);
     const world::StereoImages pair =
@@ -192,17 +195,17 @@ private:
     return none;
   }
 
-  void book_plan(const nav::NavigationResult& nav, TraverseCycle& cycle) const {
+  static void book_plan(const world::RoverPlacement& placement, const nav::NavigationResult& nav,
+                        TraverseCycle& cycle) {
     cycle.found = nav.found();
     cycle.reason = nav.reason();
     if (!nav.found())
       return;
-    const double h = pose_.heading_deg / kDegreesPerRadian;
     Eigen::Vector2d previous(0.0, 0.0);
-    cycle.planned.emplace_back(pose_.x, pose_.y);
+    cycle.planned.emplace_back(placement.pose.x, placement.pose.y);
     for (const nav::GroundPoint& p : nav.drive.polyline) {
-      cycle.planned.emplace_back(pose_.x + p.x * std::cos(h) - p.y * std::sin(h),
-                                 pose_.y + p.x * std::sin(h) + p.y * std::cos(h));
+      const Eigen::Vector3d world = placement.level_to_world * Eigen::Vector3d(p.x, p.y, 0.0);
+      cycle.planned.emplace_back(world.x(), world.y());
       cycle.planned_m += (Eigen::Vector2d(p.x, p.y) - previous).norm();
       previous = Eigen::Vector2d(p.x, p.y);
     }
@@ -222,7 +225,7 @@ private:
       cycle.turned_deg = action.turn_deg;
       cycle.events.push_back(fmt::format("turn {:+.0f} deg on the spot", action.turn_deg));
       const nav::DriveCommand turn{action.turn_deg, 0.0};
-      if (auto end = drive(std::span(&turn, 1), cycle))
+      if (auto end = end_of(drive(std::span(&turn, 1), cycle)))
         return end;
     }
     if (action.then == nav::MotionAction::Then::hand_over) {
@@ -230,17 +233,20 @@ private:
       cycle.events.push_back("hand over: a full turn found no path");
       return TraverseOutcome::hand_over;
     }
-    const nav::NavigationResult nav = navigate(action, cycle);
-    book_plan(nav, cycle);
+    const world::RoverPlacement placement =
+        world::place_rover(course_.terrain.height, pose_, s_.chassis);
+    const nav::NavigationResult nav = navigate(placement, action, cycle);
+    book_plan(placement, nav, cycle);
     action = step({nav.found() ? nav::MotionEventKind::path_found : nav::MotionEventKind::no_path})
                  .action;
     if (action.then != nav::MotionAction::Then::drive)
       return std::nullopt;
-    if (auto end = drive(nav.drive.commands, cycle))
+    const GroundDrive driven = drive(nav.drive.commands, cycle);
+    if (auto end = end_of(driven))
       return end;
     const nav::MotionEvent event =
-        last_drive_.emergency_stop
-            ? nav::MotionEvent{nav::MotionEventKind::inclination_exceeded, last_drive_.risen_side}
+        driven.emergency_stop
+            ? nav::MotionEvent{nav::MotionEventKind::inclination_exceeded, driven.risen_side}
             : nav::MotionEvent{nav::MotionEventKind::path_done};
     action = step(event).action;
     return std::nullopt;
@@ -254,7 +260,6 @@ private:
   world::RoverPose pose_;
   GroundDriveLimits limits_;
   nav::MotionStatus status_;
-  GroundDrive last_drive_;
 };
 
 } // namespace

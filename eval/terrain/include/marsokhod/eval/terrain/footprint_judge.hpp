@@ -37,6 +37,14 @@ struct FootprintVerdict {
   bool unsafe() const { return hit.has_value(); }
 };
 
+/// The first obstacle node the footprint covers at one pose of the drive (nav::drive_poses, in
+/// the level frame of the placement), and where; none when it covers none. Nodes outside the
+/// terrain count as obstacles.
+std::optional<FootprintHit> footprint_hit_at(const world::Terrain& terrain,
+                                             const world::RoverPlacement& placement,
+                                             const nav::DrivePose& pose,
+                                             const imaging::Chassis& chassis = {});
+
 /// Executes `commands` from the rover's placement on the true terrain (the level frame of the
 /// placement, its heading) and sweeps the chassis footprint (imaging::Chassis) over the
 /// terrain's obstacle map at every pose (nav::drive_poses: every 5 cm driving, every 2 degrees

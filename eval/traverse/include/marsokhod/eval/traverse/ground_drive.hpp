@@ -50,7 +50,7 @@ double tilt_deg(double pitch_deg, double roll_deg);
 /// every pose of a turn; a reading over emergency_tilt_deg, and more than 0.5 deg over the
 /// drive's first reading (a rover already standing over the threshold after an emergency stop
 /// turns and drives away without stopping again), stops the rover there. The drive is
-/// unsafe when the footprint covers a true obstacle node (eval::judge_footprint) before the
+/// unsafe when the footprint covers a true obstacle node (eval::footprint_hit_at) before the
 /// rover stops, or a reading is over tilt_limit_deg; the rover stops there too.
 GroundDrive drive_on_ground(const world::Terrain& terrain, const world::RoverPose& start,
                             std::span<const nav::DriveCommand> commands,

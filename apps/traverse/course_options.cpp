@@ -1,0 +1,26 @@
+// The course options of `traverse` and `eval traverse`.
+#include "traverse/course_options.hpp"
+
+#include "cli/option_checks.hpp"
+
+namespace marsokhod::apps {
+
+void add_course_options(CLI::App* app, eval::TraverseSettings& course) {
+  app->add_option("--slope", course.slope_deg, "Regional slope of the site, degrees")
+      ->check(real_between(0.0, 15.0))
+      ->capture_default_str();
+  app->add_option("--light", course.light, "Lighting preset")
+      ->check(CLI::IsMember({"high-sun", "overexposed", "dark-wet", "low-sun"}))
+      ->capture_default_str();
+  app->add_option("--platform", course.platform,
+                  "Where each cycle's navigation runs: native, or emulated on pc-card or onboard "
+                  "(the emulated cycle time counts as mission time; onboard images are 128 x 128, "
+                  "what its two 256 KB modules hold)")
+      ->check(CLI::IsMember({"native", "pc-card", "onboard"}))
+      ->capture_default_str();
+  app->add_option("--goal-m", course.goal_m, "Straight-line distance from the start to the goal, m")
+      ->check(real_between(5.0, 180.0))
+      ->capture_default_str();
+}
+
+} // namespace marsokhod::apps
