@@ -18,6 +18,17 @@ void add_course_options(CLI::App* app, eval::TraverseSettings& course) {
                   "what its two 256 KB modules hold)")
       ->check(CLI::IsMember({"native", "pc-card", "onboard"}))
       ->capture_default_str();
+  app->add_option("--drive-m", course.drive_m,
+                  "How far along each planned path the rover drives before it looks again, m; "
+                  "0 drives every path to its end (the paper's scheme)")
+      ->check(real_between(0.0, 20.0))
+      ->capture_default_str();
+  app->add_option("--slip", course.slip,
+                  "Mean wheel slip, 0..0.5: the ground gives each drive (1 - s) of what the "
+                  "wheels turn, s drawn per drive around this mean, and the rover steers by its "
+                  "dead-reckoned odometry")
+      ->check(real_between(0.0, 0.5))
+      ->capture_default_str();
   app->add_option("--goal-m", course.goal_m, "Straight-line distance from the start to the goal, m")
       ->check(real_between(5.0, 180.0))
       ->capture_default_str();

@@ -5,6 +5,7 @@
 #include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
 #include "marsokhod/eval/traverse/ground_drive.hpp"
+#include "marsokhod/eval/traverse/odometry.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav_program/run/navigation_program.hpp"
 #include "marsokhod/world/lighting/lit_surface.hpp"
@@ -14,6 +15,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -21,11 +23,19 @@ namespace marsokhod::eval {
 namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
-// Ground beyond the course on every side: the view reaches past the goal and the escapes turn.
+// Ground beyond the course at either end: the view reaches past the goal.
 constexpr double kSiteMarginM = 10.0;
+// North-south side of the site: the course's strip (the 100 m x 30 m site); the
+// navigation sees sky past its edges and plans nothing there.
+constexpr double kSiteWidthM = 30.0;
 
 double wrap_deg(double deg) {
   return std::remainder(deg, 360.0);
+}
+
+// The rover at the west end of the course, facing east toward the goal.
+world::RoverPose start_of(const TraverseSettings& s) {
+  return {-0.5 * s.goal_m, 0.0, 0.0};
 }
 
 int cycle_limit(const TraverseSettings& s) {
@@ -75,12 +85,27 @@ std::pair<double, double> target_range(const nav::MotionAction& action, double g
   return {std::max(far - 1.0, 2.5), far};
 }
 
+// The first `length_m` metres of the commands' driving (all of it when length_m is 0).
+std::vector<nav::DriveCommand> first_metres(std::span<const nav::DriveCommand> commands,
+                                            double length_m) {
+  std::vector<nav::DriveCommand> kept;
+  double left = length_m > 0.0 ? length_m : std::numeric_limits<double>::infinity();
+  for (const nav::DriveCommand& command : commands) {
+    if (left <= 0.0)
+      break;
+    kept.push_back({command.turn_deg, std::min(command.distance_m, left)});
+    left -= command.distance_m;
+  }
+  return kept;
+}
+
 class Loop {
 public:
   Loop(const TraverseSettings& s, const world::Terrain& terrain, const CycleView& view)
-      : s_(s), course_(s, terrain), computer_(computer_for(s)), view_(view) {
+      : s_(s), course_(s, terrain), computer_(computer_for(s)), view_(view),
+        odometry_(start_of(s), s.slip, s.seed) {
     result_.settings = s;
-    result_.start = {-0.5 * s.goal_m, 0.0, 0.0};
+    result_.start = start_of(s);
     result_.goal = Eigen::Vector2d(0.5 * s.goal_m, 0.0);
     pose_ = result_.start;
     limits_ = {s.emergency_tilt_deg, s.tilt_limit_deg, s.read_every_m, result_.goal,
@@ -108,24 +133,37 @@ public:
 
 private:
   double goal_left() const { return (Eigen::Vector2d(pose_.x, pose_.y) - result_.goal).norm(); }
+  // What the rover steers by: the goal as seen from where the odometry says it is.
+  Eigen::Vector2d goal_from_estimate() const {
+    const world::RoverPose& e = odometry_.estimate();
+    return result_.goal - Eigen::Vector2d(e.x, e.y);
+  }
 
   TraverseResult finish(TraverseOutcome outcome) {
     result_.outcome = outcome;
     result_.end = pose_;
     result_.goal_left_m = goal_left();
+    result_.estimate = odometry_.estimate();
     return std::move(result_);
   }
 
   // Drives on the true ground and books it.
   GroundDrive drive(std::span<const nav::DriveCommand> commands, TraverseCycle& cycle) {
+    // The wheels turn through each commanded length; the ground gives `factor` of it.
+    const double factor = odometry_.next_drive_factor();
+    std::vector<nav::DriveCommand> on_ground(commands.begin(), commands.end());
+    for (nav::DriveCommand& command : on_ground)
+      command.distance_m *= factor;
     const GroundDrive drive =
-        drive_on_ground(course_.terrain, pose_, commands, s_.chassis, limits_);
+        drive_on_ground(course_.terrain, pose_, on_ground, s_.chassis, limits_);
+    odometry_.book(pose_, drive.end, factor);
     pose_ = drive.end;
+    cycle.slip = 1.0 - factor;
     cycle.driven_m += drive.driven_m;
     cycle.track.insert(cycle.track.end(), drive.track.begin(), drive.track.end());
     result_.distance_m += drive.driven_m;
     result_.driving_seconds +=
-        drive.driven_m / s_.drive_speed_m_s + drive.turned_deg / s_.turn_rate_deg_s;
+        drive.driven_m / factor / s_.drive_speed_m_s + drive.turned_deg / s_.turn_rate_deg_s;
     if (drive.unsafe) {
       result_.unsafe_events.push_back({drive.unsafe_at.x(), drive.unsafe_at.y(), *drive.unsafe});
       cycle.events.push_back("unsafe: " + *drive.unsafe);
@@ -157,12 +195,13 @@ private:
         course_.renderer.render(course_.rig, placement, course_.surface, render);
     nav::NavigationOptions options;
     options.attitude = placement.attitude;
-    const auto [near, far] = target_range(action, goal_left());
+    const Eigen::Vector2d to_goal = goal_from_estimate();
+    const auto [near, far] = target_range(action, to_goal.norm());
     options.planner.target_min_m = near;
     options.planner.target_max_m = far;
-    const Eigen::Vector2d to_goal = result_.goal - Eigen::Vector2d(pose_.x, pose_.y);
     options.planner.heading_deg =
-        wrap_deg(std::atan2(to_goal.y(), to_goal.x()) * kDegreesPerRadian - pose_.heading_deg);
+        wrap_deg(std::atan2(to_goal.y(), to_goal.x()) * kDegreesPerRadian -
+                 odometry_.estimate().heading_deg);
     const auto started = std::chrono::steady_clock::now();
     nav::NavigationResult nav = computer_
                                     ? emulate(pair, options, cycle)
@@ -220,6 +259,7 @@ private:
   // One cycle: the action's turn, then plan (and drive) or hand over.
   std::optional<TraverseOutcome> run_cycle(nav::MotionAction& action, TraverseCycle& cycle) {
     cycle.start = pose_;
+    cycle.estimate = odometry_.estimate();
     cycle.state = status_.state;
     if (action.turn_deg != 0.0) {
       cycle.turned_deg = action.turn_deg;
@@ -241,7 +281,7 @@ private:
                  .action;
     if (action.then != nav::MotionAction::Then::drive)
       return std::nullopt;
-    const GroundDrive driven = drive(nav.drive.commands, cycle);
+    const GroundDrive driven = drive(first_metres(nav.drive.commands, s_.drive_m), cycle);
     if (auto end = end_of(driven))
       return end;
     const nav::MotionEvent event =
@@ -257,61 +297,13 @@ private:
   std::optional<EmulatedComputer> computer_;
   const CycleView& view_;
   TraverseResult result_;
+  Odometry odometry_;
   world::RoverPose pose_;
   GroundDriveLimits limits_;
   nav::MotionStatus status_;
 };
 
 } // namespace
-
-void validate(const TraverseSettings& s) {
-  const auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
-  if (!(s.rocks >= 0.0 && s.rocks <= 0.5))
-    throw std::invalid_argument(fmt::format("traverse: rocks = {} must be within 0..0.5", s.rocks));
-  if (!(s.slope_deg >= 0.0 && s.slope_deg <= 15.0))
-    throw std::invalid_argument(
-        fmt::format("traverse: slope = {} deg must be within 0..15", s.slope_deg));
-  if (!(s.goal_m >= 5.0 && s.goal_m <= 180.0))
-    throw std::invalid_argument(
-        fmt::format("traverse: goal = {} m must be within 5..180", s.goal_m));
-  if (!positive(s.goal_tolerance_m) || !positive(s.read_every_m) || !positive(s.drive_speed_m_s) ||
-      !positive(s.turn_rate_deg_s))
-    throw std::invalid_argument(
-        "traverse: tolerances, reading interval and speeds must be positive");
-  if (!(s.emergency_tilt_deg > 0.0 && s.emergency_tilt_deg <= s.tilt_limit_deg &&
-        s.tilt_limit_deg < 90.0))
-    throw std::invalid_argument(fmt::format(
-        "traverse: the emergency tilt {} deg must be positive and at most the limit {} deg (< 90)",
-        s.emergency_tilt_deg, s.tilt_limit_deg));
-  if (s.max_cycles < 0)
-    throw std::invalid_argument("traverse: max_cycles must not be negative");
-  imaging::validate(s.chassis);
-  world::parse_light_preset(s.light);
-  if (s.platform != "native" && s.platform != "pc-card" && s.platform != "onboard")
-    throw std::invalid_argument(
-        fmt::format("traverse: platform '{}' is not one of native, pc-card, onboard", s.platform));
-}
-
-std::string_view to_string(TraverseOutcome outcome) {
-  switch (outcome) {
-  case TraverseOutcome::success:
-    return "success";
-  case TraverseOutcome::hand_over:
-    return "hand_over";
-  case TraverseOutcome::unsafe:
-    return "unsafe";
-  case TraverseOutcome::timeout:
-    return "timeout";
-  }
-  return "invalid";
-}
-
-double TraverseResult::path_efficiency() const {
-  if (outcome != TraverseOutcome::success || distance_m <= 0.0)
-    return 0.0;
-  const double shortest = settings.goal_m - settings.goal_tolerance_m;
-  return shortest / std::max(distance_m, shortest);
-}
 
 world::TerrainSettings traverse_site(const TraverseSettings& s) {
   validate(s);
@@ -320,7 +312,8 @@ world::TerrainSettings traverse_site(const TraverseSettings& s) {
   site.rock_cover = s.rocks;
   site.regional_slope_deg = s.slope_deg;
   site.size_m = s.goal_m + 2.0 * kSiteMarginM;
-  site.clear_centre = Eigen::Vector2d(-0.5 * s.goal_m, 0.0);
+  site.width_m = kSiteWidthM;
+  site.clear_centre = Eigen::Vector2d(start_of(s).x, start_of(s).y);
   site.clear_radius_m = unseen_start_radius(imaging::StereoRig(rig_of(s)), s.chassis);
   return site;
 }

@@ -23,6 +23,8 @@ json settings_json(const TraverseSettings& s) {
           {"slope_deg", s.slope_deg},
           {"light", s.light},
           {"goal_m", s.goal_m},
+          {"drive_m", s.drive_m},
+          {"slip", s.slip},
           {"image_px", s.image_px},
           {"goal_tolerance_m", s.goal_tolerance_m},
           {"emergency_tilt_deg", s.emergency_tilt_deg},
@@ -46,6 +48,8 @@ json cycle_json(const TraverseCycle& c) {
   line["planned_m"] = c.planned_m;
   line["driven_m"] = c.driven_m;
   line["emergency_stop"] = c.emergency_stop;
+  line["estimate"] = pose_json(c.estimate);
+  line["slip"] = c.slip;
   line["compute_seconds"] = c.compute_seconds;
   line["events"] = c.events;
   line["planned"] = points_json(c.planned);
@@ -64,6 +68,8 @@ json traverse_json(const TraverseResult& r) {
   doc["goal"] = {{"x_m", r.goal.x()}, {"y_m", r.goal.y()}};
   doc["end"] = pose_json(r.end);
   doc["goal_left_m"] = r.goal_left_m;
+  doc["estimate"] = pose_json(r.estimate);
+  doc["odometry_error_m"] = r.odometry_error_m();
   doc["distance_m"] = r.distance_m;
   doc["path_efficiency"] = r.path_efficiency();
   doc["cycles"] = r.cycles.size();

@@ -32,7 +32,7 @@ struct MapFrame {
   }
 };
 
-void put(imaging::Image<std::uint8_t>& map, int x, int y, const Rgb& colour) {
+void plot(imaging::Image<std::uint8_t>& map, int x, int y, const Rgb& colour) {
   if (x < 0 || y < 0 || x >= map.width() || y >= map.height())
     return;
   for (int c = 0; c < 3; ++c)
@@ -46,7 +46,7 @@ void segment(imaging::Image<std::uint8_t>& map, const MapFrame& f, const Eigen::
   const int steps = static_cast<int>(std::min(8192.0, std::ceil((pb - pa).norm()))) + 1;
   for (int i = 0; i <= steps; ++i) {
     const Eigen::Vector2d p = pa + (pb - pa) * (static_cast<double>(i) / steps);
-    put(map, static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())), colour);
+    plot(map, static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())), colour);
   }
 }
 
@@ -63,7 +63,7 @@ void square(imaging::Image<std::uint8_t>& map, const MapFrame& f, const Eigen::V
   const int cy = static_cast<int>(std::lround(p.y()));
   for (int dy = -half; dy <= half; ++dy)
     for (int dx = -half; dx <= half; ++dx)
-      put(map, cx + dx, cy + dy, colour);
+      plot(map, cx + dx, cy + dy, colour);
 }
 
 void circle(imaging::Image<std::uint8_t>& map, const MapFrame& f, const Eigen::Vector2d& centre,
@@ -92,7 +92,7 @@ void hillshade(imaging::Image<std::uint8_t>& map, const MapFrame& f,
           static_cast<int>(std::lround((w.y() - h.node_position(0, 0).y()) / h.cell_m()));
       const bool obstacle = node_i >= 0 && node_j >= 0 && node_i < h.nx() && node_j < h.ny() &&
                             terrain.obstacles(node_i, node_j) != 0;
-      put(map, x, y, obstacle ? kObstacle : Rgb{grey, grey, grey});
+      plot(map, x, y, obstacle ? kObstacle : Rgb{grey, grey, grey});
     }
 }
 
@@ -120,8 +120,8 @@ MapFrame frame_of(const world::Terrain& terrain, const TraverseResult& result) {
     for (const Eigen::Vector2d& p : cycle.track)
       include(p);
   }
-  const double half = 0.5 * terrain.settings.size_m;
-  const Eigen::Vector2d edge(half, half);
+  const Eigen::Vector2d edge =
+      0.5 * Eigen::Vector2d(terrain.settings.size_m, world::north_south_m(terrain.settings));
   low = (low - Eigen::Vector2d::Constant(kMapMarginM)).cwiseMax(-edge);
   high = (high + Eigen::Vector2d::Constant(kMapMarginM)).cwiseMin(edge);
   MapFrame f{low.x(), high.y(), 0, 0};
@@ -154,12 +154,12 @@ imaging::Image<std::uint8_t> traverse_map(const world::Terrain& terrain,
   const Rgb border = outcome_colour(result.outcome);
   for (int i = 0; i < 6; ++i) {
     for (int x = 0; x < f.width; ++x) {
-      put(map, x, i, border);
-      put(map, x, f.height - 1 - i, border);
+      plot(map, x, i, border);
+      plot(map, x, f.height - 1 - i, border);
     }
     for (int y = 0; y < f.height; ++y) {
-      put(map, i, y, border);
-      put(map, f.width - 1 - i, y, border);
+      plot(map, i, y, border);
+      plot(map, f.width - 1 - i, y, border);
     }
   }
   return map;

@@ -15,8 +15,8 @@ namespace {
 using json = nlohmann::ordered_json;
 
 constexpr int kMaxJobs = 64;
-constexpr std::array kOutcomes{TraverseOutcome::success, TraverseOutcome::hand_over,
-                               TraverseOutcome::unsafe, TraverseOutcome::timeout};
+constexpr std::array kTraverseOutcomes{TraverseOutcome::success, TraverseOutcome::hand_over,
+                                       TraverseOutcome::unsafe, TraverseOutcome::timeout};
 
 TraverseSettings trial_settings(const TraverseSweep& sweep, std::uint64_t trial) {
   const std::uint64_t seeds = sweep.last_seed - sweep.first_seed + 1;
@@ -128,7 +128,7 @@ std::vector<RockFigures> sweep_figures(const TraverseSweep& sweep,
     const Tally& t = tallies[i];
     RockFigures f;
     f.rocks = sweep.rocks[i];
-    for (const TraverseOutcome o : kOutcomes) {
+    for (const TraverseOutcome o : kTraverseOutcomes) {
       const auto found = t.outcomes.find(std::string(to_string(o)));
       f.outcomes[std::string(to_string(o))] = found == t.outcomes.end() ? 0 : found->second;
       f.trials += f.outcomes[std::string(to_string(o))];

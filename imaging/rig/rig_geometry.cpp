@@ -9,7 +9,7 @@
 namespace marsokhod::imaging {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kInfiniteRange = std::numeric_limits<double>::infinity();
 
 struct CameraPoint {
   double u, v, depth;
@@ -28,7 +28,7 @@ double ground_behind(const StereoRig& rig, const Eigen::Vector3d& point_level) {
   const Eigen::Vector3d centre = rig.camera_to_level(Eye::left).translation();
   const double drop = centre.z() - point_level.z();
   if (drop <= 0.0)
-    return kInfinity;
+    return kInfiniteRange;
   return (centre + (point_level - centre) * (centre.z() / drop)).x();
 }
 
@@ -49,7 +49,7 @@ double ground_distance_at_row(const StereoRig& rig, double v, const Attitude& at
       pose.linear() * Eigen::Vector3d(0.0, v - rig.cy(), rig.focal_px());
   const Eigen::Vector3d centre = pose.translation();
   if (centre.z() <= 0.0 || direction.z() >= 0.0)
-    return kInfinity;
+    return kInfiniteRange;
   return (centre + direction * (centre.z() / -direction.z())).x();
 }
 

@@ -19,7 +19,7 @@
 namespace marsokhod::nav::detail {
 namespace {
 
-constexpr float kUnknown = std::numeric_limits<float>::infinity();
+constexpr float kUnknownDisparity = std::numeric_limits<float>::infinity();
 static_assert(kBandRows == kMatchedBandRows, "the public band height is the matcher's");
 
 // Buffers reused by every band of the layer.
@@ -115,7 +115,7 @@ LayerOutput layer_output(const LayerInput& input, std::pmr::memory_resource* mem
   const int width = input.left.width();
   const int rows =
       input.bands != nullptr ? std::min(kBandRows, input.left.height()) : input.left.height();
-  return {imaging::Image<float>(width, rows, 1, kUnknown, memory),
+  return {imaging::Image<float>(width, rows, 1, kUnknownDisparity, memory),
           imaging::Image<std::uint8_t>(width, rows, 1, 0, memory), 0, 0, 0};
 }
 

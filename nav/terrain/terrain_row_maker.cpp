@@ -14,7 +14,7 @@
 namespace marsokhod::nav::detail {
 namespace {
 
-constexpr float kUnknown = std::numeric_limits<float>::infinity();
+constexpr float kUnmeasured = std::numeric_limits<float>::infinity();
 
 // std::hypot rounded to float, without its cost on nearly every pixel: sqrt(x^2 + y^2) lies
 // within a few double ulps of the exact value, as does hypot, so where every value within
@@ -118,7 +118,7 @@ private:
       return 2;
     const int unknown = known == 1 ? u + 1 : u;
     for (float* row : rows_)
-      row[unknown] = kUnknown;
+      row[unknown] = kUnmeasured;
     return 1;
   }
 

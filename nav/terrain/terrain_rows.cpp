@@ -13,11 +13,11 @@
 namespace marsokhod::nav {
 namespace {
 
-constexpr float kUnknown = std::numeric_limits<float>::infinity();
+constexpr float kNoPoint = std::numeric_limits<float>::infinity();
 
 // The four planes of one row in `points`, each +inf (unknown) until converted.
 void clear_planes(std::pmr::vector<float>& points, int width, float* (&rows)[4]) {
-  std::fill(points.begin(), points.end(), kUnknown);
+  std::fill(points.begin(), points.end(), kNoPoint);
   for (int plane = 0; plane < 4; ++plane)
     rows[plane] = points.data() + static_cast<std::ptrdiff_t>(plane) * width;
 }
@@ -36,7 +36,7 @@ RecomputedTerrain::RecomputedTerrain(imaging::ImageView<const float> disparity,
       meter_(&meter),
       maker_((detail::check_disparity_fits(disparity, rig, "RecomputedTerrain"),
               std::make_unique<Maker>(Maker{detail::TerrainRowMaker(rig, attitude)}))),
-      points_(static_cast<std::size_t>(disparity.width()) * 4, kUnknown, memory) {}
+      points_(static_cast<std::size_t>(disparity.width()) * 4, kNoPoint, memory) {}
 
 RecomputedTerrain::~RecomputedTerrain() = default;
 
@@ -60,7 +60,7 @@ std::uint64_t count_terrain_points(imaging::ImageView<const float> disparity,
                                    Meter& meter, std::pmr::memory_resource* memory) {
   detail::check_disparity_fits(disparity, rig, "count_terrain_points");
   const detail::TerrainRowMaker maker(rig, attitude);
-  std::pmr::vector<float> points(static_cast<std::size_t>(disparity.width()) * 4, kUnknown, memory);
+  std::pmr::vector<float> points(static_cast<std::size_t>(disparity.width()) * 4, kNoPoint, memory);
   std::uint64_t known = 0;
   for (int v = 0; v < disparity.height(); ++v) {
     float* rows[4];

@@ -10,7 +10,7 @@ namespace {
 
 using Bytes16 = std::uint8_t __attribute__((vector_size(16)));
 using Counters = std::array<std::uint64_t, kZoneKinds>;
-constexpr int kBytes = 16;
+constexpr int kLaneBytes = 16;
 // A byte lane counts up to 255 before it is folded into the totals.
 constexpr int kChunksPerFold = 255;
 
@@ -18,16 +18,16 @@ constexpr int kChunksPerFold = 255;
 // time: a match is -1 in its byte lane, so subtracting it counts it.
 void count_run(const std::uint8_t* pixels, int n, Counters& counts) {
   int x = 0;
-  while (x + kBytes <= n) {
+  while (x + kLaneBytes <= n) {
     Bytes16 lanes[kZoneKinds - 1] = {};
-    for (int chunk = 0; chunk < kChunksPerFold && x + kBytes <= n; ++chunk, x += kBytes) {
+    for (int chunk = 0; chunk < kChunksPerFold && x + kLaneBytes <= n; ++chunk, x += kLaneBytes) {
       Bytes16 v;
       std::memcpy(&v, pixels + x, sizeof v);
       for (int k = 0; k < kZoneKinds - 1; ++k)
         lanes[k] -= std::bit_cast<Bytes16>(v == static_cast<std::uint8_t>(k));
     }
     for (int k = 0; k < kZoneKinds - 1; ++k)
-      for (int lane = 0; lane < kBytes; ++lane)
+      for (int lane = 0; lane < kLaneBytes; ++lane)
         counts[static_cast<std::size_t>(k)] += lanes[k][lane];
   }
   for (; x < n; ++x)

@@ -12,6 +12,7 @@ namespace keys = scene_keys;
 json terrain_json(const TerrainSettings& t, const LocomotionLimits& limits) {
   return {{"seed", t.seed},
           {"size_m", t.size_m},
+          {"width_m", north_south_m(t)},
           {"cell_m", t.cell_m},
           {"rock_cover", t.rock_cover},
           {"crater_density_per_m2", t.crater_density},

@@ -69,13 +69,12 @@ double Crater::relief_at(double r) const {
 std::vector<Crater> sample_craters(const CraterField& field, std::uint64_t seed) {
   std::vector<Crater> craters;
   RandomStream rng(seed);
-  const double expected = field.density_per_m2 * field.extent_m * field.extent_m;
+  const double expected = field.density_per_m2 * field.extent.prod();
   const auto count = static_cast<long>(std::floor(expected + rng.uniform()));
   for (long n = 0; n < count; ++n) {
     Crater crater = draw_crater(rng);
     for (int attempt = 0; attempt < kPlacementAttempts; ++attempt) {
-      crater.centre = Eigen::Vector2d(rng.uniform(-0.5, 0.5) * field.extent_m,
-                                      rng.uniform(-0.5, 0.5) * field.extent_m);
+      crater.centre = uniform_in_rectangle(field.extent, rng);
       if ((crater.centre - field.clear_centre).norm() >= field.clear_radius_m + crater.reach_m()) {
         craters.push_back(crater);
         break;

@@ -166,15 +166,15 @@ std::vector<Rock> sample_rocks(const RockField& field, std::uint64_t seed) {
   if (field.rock_cover <= 0.0)
     return rocks;
   const RockAbundanceModel model(field.rock_cover);
-  // Centres also fall in a margin around the square so its edges get their share of rocks.
-  const double side = field.extent_m + kMaxRockDiameterM;
-  const double target_area = -std::log(1.0 - field.rock_cover) * side * side;
+  // Centres also fall in a margin around the site so its edges get their share of rocks.
+  const Eigen::Vector2d sides = field.extent.array() + kMaxRockDiameterM;
+  const double target_area = -std::log(1.0 - field.rock_cover) * sides.prod();
   RandomStream rng(seed);
   double placed_area = 0.0;
   while (placed_area < target_area) {
     const double diameter = model.sample_diameter(rng.uniform());
     Rock rock = draw_rock_shape(diameter, rng);
-    rock.centre = Eigen::Vector2d(rng.uniform(-0.5, 0.5) * side, rng.uniform(-0.5, 0.5) * side);
+    rock.centre = uniform_in_rectangle(sides, rng);
     placed_area += 0.25 * std::numbers::pi * diameter * diameter;
     if ((rock.centre - field.clear_centre).norm() < field.clear_radius_m + rock.reach_m())
       continue;

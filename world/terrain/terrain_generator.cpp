@@ -12,6 +12,7 @@
 #include <cmath>
 #include <span>
 #include <stdexcept>
+#include <string_view>
 
 namespace marsokhod::world {
 namespace {
@@ -22,8 +23,19 @@ void require_range(double value, double lo, double hi, const char* name, const c
         fmt::format("TerrainSettings: {} = {} is out of range (must be {})", name, value, range));
 }
 
-int nodes_per_side(const TerrainSettings& settings) {
-  return static_cast<int>(std::lround(settings.size_m / settings.cell_m));
+int nodes_along(double side_m, const TerrainSettings& settings) {
+  return static_cast<int>(std::lround(side_m / settings.cell_m));
+}
+
+void require_side(double side_m, std::string_view name, const TerrainSettings& settings) {
+  if (!(side_m > 0.0) || !std::isfinite(side_m))
+    throw std::invalid_argument(
+        fmt::format("TerrainSettings: {} = {} must be positive", name, side_m));
+  const double nodes = side_m / settings.cell_m;
+  if (!(nodes >= 1.5 && nodes < imaging::kMaxImageSide + 0.5))
+    throw std::invalid_argument(fmt::format(
+        "TerrainSettings: {} / cell_m = {} nodes a side is out of range (must be 2..{})", name,
+        nodes, imaging::kMaxImageSide));
 }
 
 } // namespace
@@ -32,14 +44,9 @@ void validate(const TerrainSettings& settings) {
   if (!(settings.cell_m > 0.0) || !std::isfinite(settings.cell_m))
     throw std::invalid_argument(
         fmt::format("TerrainSettings: cell_m = {} must be positive", settings.cell_m));
-  if (!(settings.size_m > 0.0) || !std::isfinite(settings.size_m))
-    throw std::invalid_argument(
-        fmt::format("TerrainSettings: size_m = {} must be positive", settings.size_m));
-  const double nodes = settings.size_m / settings.cell_m;
-  if (!(nodes >= 1.5 && nodes < imaging::kMaxImageSide + 0.5))
-    throw std::invalid_argument(fmt::format(
-        "TerrainSettings: size_m / cell_m = {} nodes a side is out of range (must be 2..{})", nodes,
-        imaging::kMaxImageSide));
+  require_side(settings.size_m, "size_m", settings);
+  if (settings.width_m != 0.0)
+    require_side(settings.width_m, "width_m", settings);
   require_range(settings.rock_cover, 0.0, 0.5, "rock_cover", "0..0.5");
   require_range(settings.crater_density, 0.0, 1.0, "crater_density", "0..1 per square metre");
   require_range(settings.undulation_m, 0.0, 10.0, "undulation_m", "0..10 m");
@@ -57,21 +64,23 @@ void validate(const TerrainSettings& settings) {
 Terrain Terrain::generate(const TerrainSettings& settings, const LocomotionLimits& limits) {
   validate(settings);
   validate(limits);
-  const int n = nodes_per_side(settings);
-  const double half_span = 0.5 * (n - 1) * settings.cell_m;
+  const int nx = nodes_along(settings.size_m, settings);
+  const int ny = nodes_along(north_south_m(settings), settings);
+  const Eigen::Vector2d half_span = 0.5 * settings.cell_m * Eigen::Vector2d(nx - 1, ny - 1);
   Terrain terrain;
   terrain.settings = settings;
-  terrain.height = HeightField(n, n, settings.cell_m, Eigen::Vector2d(-half_span, -half_span));
+  terrain.height = HeightField(nx, ny, settings.cell_m, -half_span);
 
   shape_regolith(settings, terrain.height);
-  const CraterField crater_field{settings.crater_density, settings.size_m, settings.clear_radius_m,
+  const Eigen::Vector2d extent(settings.size_m, north_south_m(settings));
+  const CraterField crater_field{settings.crater_density, extent, settings.clear_radius_m,
                                  settings.clear_centre};
   carve_craters(
       sample_craters(crater_field, terrain_stream_seed(settings.seed, TerrainStream::craters)),
       terrain.height);
   terrain.albedo =
       regolith_albedo(terrain.height, terrain_stream_seed(settings.seed, TerrainStream::albedo));
-  const RockField rock_field{settings.rock_cover, settings.size_m, settings.clear_radius_m,
+  const RockField rock_field{settings.rock_cover, extent, settings.clear_radius_m,
                              settings.clear_centre};
   place_rocks(sample_rocks(rock_field, terrain_stream_seed(settings.seed, TerrainStream::rocks)),
               terrain.height, terrain.albedo);

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -94,6 +95,34 @@ TEST(Traverse, EmulatedCyclesCountAsMissionTime) {
   EXPECT_EQ(same_size.outcome, onboard.outcome);
 }
 
+// With slip the ground gives each drive (1 - s) of its commanded lengths: the first path's
+// driven length is the planned length times that share (to the 5 cm pose spacing), and the
+// odometry, counting wheel turns, believes the rover went the whole way.
+TEST(Traverse, SlipShortensEachDriveAndTheOdometryOvershoots) {
+  TraverseSettings s = short_bare_course();
+  s.slip = 0.3;
+  s.max_cycles = 1;
+  const TraverseResult r = run_traverse(s);
+  ASSERT_EQ(r.cycles.size(), 1u);
+  const TraverseCycle& c = r.cycles[0];
+  ASSERT_TRUE(c.found) << c.reason;
+  EXPECT_GE(c.slip, 0.15);
+  EXPECT_LT(c.slip, 0.45);
+  EXPECT_NEAR(c.driven_m, c.planned_m * (1.0 - c.slip), 0.06);
+  const double moved = std::hypot(r.end.x - r.start.x, r.end.y - r.start.y);
+  EXPECT_NEAR(r.odometry_error_m(), moved * c.slip / (1.0 - c.slip), 1e-6);
+}
+
+// The rover steers by its odometry; the judge sees the truth. At 20 % slip a 20 m course is
+// still finished, with the odometry some way off.
+TEST(Traverse, SlippingRoverStillReachesTheGoal) {
+  TraverseSettings s = short_bare_course();
+  s.slip = 0.2;
+  const TraverseResult r = run_traverse(s);
+  ASSERT_EQ(r.outcome, TraverseOutcome::success) << traverse_json(r).dump(2);
+  EXPECT_GT(r.odometry_error_m(), 0.5);
+}
+
 std::string refusal(const TraverseSettings& s) {
   try {
     validate(s);
@@ -122,6 +151,9 @@ TEST(Traverse, BadSettingsAreRefusedNamingTheSetting) {
   s = {};
   s.platform = "cray";
   EXPECT_NE(refusal(s).find("platform 'cray'"), std::string::npos);
+  s = {};
+  s.slip = 0.51;
+  EXPECT_NE(refusal(s).find("slip"), std::string::npos);
 }
 
 } // namespace

@@ -13,7 +13,7 @@ namespace marsokhod::world {
 namespace {
 
 TEST(Craters, CraterDiametersFollowThePowerLawAndSomeArePits) {
-  const std::vector<Crater> craters = sample_craters({1.0, 100.0, 0.0}, 17);
+  const std::vector<Crater> craters = sample_craters({1.0, Eigen::Vector2d(100.0, 100.0), 0.0}, 17);
   ASSERT_GT(craters.size(), 9000u);
   int bowls = 0;
   int bowls_above_1m = 0;

@@ -20,7 +20,7 @@ TEST(Rocks, RockSizesFollowTheGolombekRappModel) {
   const auto share_above = [&](double d) {
     return (std::exp(-q * d) - std::exp(-q * 2.0)) / (std::exp(-q * 0.05) - std::exp(-q * 2.0));
   };
-  const std::vector<Rock> rocks = sample_rocks({k, 150.0, 0.0}, 99);
+  const std::vector<Rock> rocks = sample_rocks({k, Eigen::Vector2d(150.0, 150.0), 0.0}, 99);
   double total = 0.0;
   double above_02 = 0.0;
   double above_05 = 0.0;

@@ -55,6 +55,19 @@ TEST(TerrainGenerator, GridIsCentredOnTheOriginWithSizeOverCellNodes) {
   EXPECT_EQ(site.obstacles.height(), 500);
 }
 
+TEST(TerrainGenerator, StripHasItsTwoSidesCentredOnTheOrigin) {
+  TerrainSettings settings = small_site();
+  settings.size_m = 20.0;
+  settings.width_m = 6.0;
+  const Terrain strip = Terrain::generate(settings);
+  ASSERT_EQ(strip.height.nx(), 1000); // 20 m / 2 cm east-west
+  ASSERT_EQ(strip.height.ny(), 300);  // 6 m / 2 cm north-south
+  EXPECT_NEAR(strip.height.origin().x(), -0.5 * 999 * 0.02, 1e-12);
+  EXPECT_NEAR(strip.height.origin().y(), -0.5 * 299 * 0.02, 1e-12);
+  EXPECT_EQ(strip.albedo.width(), 1000);
+  EXPECT_EQ(strip.obstacles.height(), 300);
+}
+
 /// Fraction of the nodes farther than `radius` from the origin where the two sites differ in
 /// height by more than a millimetre, i.e. where rocks stand.
 double covered_fraction(const Terrain& with_rocks, const Terrain& bare, double radius) {
@@ -82,6 +95,18 @@ TEST(TerrainGenerator, RealisedRockCoverMatchesTheSetting) {
     const double measured = covered_fraction(rocky, bare, settings.clear_radius_m + 1.0);
     EXPECT_NEAR(measured, cover, 0.1 * cover) << "rock_cover " << cover;
   }
+}
+
+TEST(TerrainGenerator, RockCoverOfAStripMatchesTheSetting) {
+  TerrainSettings settings;
+  settings.seed = 12;
+  settings.size_m = 60.0;
+  settings.width_m = 10.0;
+  settings.rock_cover = 0.10;
+  const Terrain rocky = Terrain::generate(settings);
+  settings.rock_cover = 0.0;
+  const Terrain bare = Terrain::generate(settings);
+  EXPECT_NEAR(covered_fraction(rocky, bare, settings.clear_radius_m + 1.0), 0.10, 0.01);
 }
 
 // The disc around `centre` (radius 2 m) is left bare; rocks and craters land outside it.
@@ -231,6 +256,12 @@ TEST(TerrainGenerator, BadSettingsAreRejectedWithTheirName) {
   bad = small_site();
   bad.size_m = -1.0;
   EXPECT_NE(message_of(bad).find("size_m"), std::string::npos);
+  bad = small_site();
+  bad.width_m = -2.0;
+  EXPECT_NE(message_of(bad).find("width_m"), std::string::npos);
+  bad = small_site();
+  bad.width_m = 400.0; // 20000 nodes north-south
+  EXPECT_NE(message_of(bad).find("width_m / cell_m"), std::string::npos);
   bad = small_site();
   bad.size_m = 1000.0; // 50000 nodes a side
   EXPECT_NE(message_of(bad).find("nodes a side"), std::string::npos);

@@ -29,7 +29,13 @@ struct TraverseSettings {
   /// ("pc-card", "onboard") whose emulated cycle time counts as mission time.
   std::string platform = "native";
   double goal_m = 80.0; ///< straight-line distance from the start to the goal
-  int image_px = 256;   ///< the stereo pair's width and height
+  /// How far along each planned path the rover drives before the next cycle looks again; 0:
+  /// to the path's end, as the paper's scheme does.
+  double drive_m = 0.0;
+  /// Mean wheel slip, 0..0.5: the rover steers by dead-reckoned odometry (eval::Odometry) whose
+  /// error grows with it; 0 is exact odometry.
+  double slip = 0.0;
+  int image_px = 256; ///< the stereo pair's width and height
   double goal_tolerance_m = 1.5;
   /// The inclinometer's emergency threshold (the paper: "higher than the threshold"; the value
   /// is not given): below the chassis limit so that the rover stops before it tips.
@@ -74,6 +80,9 @@ struct TraverseCycle {
   std::vector<Eigen::Vector2d> planned; ///< the planned polyline, world frame
   std::vector<Eigen::Vector2d> track;   ///< the driven centre line, world frame
   bool emergency_stop = false;
+  /// Where the rover believed it began (dead-reckoned odometry) and the slip of its path drive.
+  world::RoverPose estimate;
+  double slip = 0.0;
   double host_seconds = 0.0;    ///< this machine's time for the navigation cycle (not mission time)
   double compute_seconds = 0.0; ///< the emulated cycle's time (0 natively)
   std::vector<std::string> events;
@@ -86,8 +95,9 @@ struct TraverseResult {
   world::RoverPose start;
   Eigen::Vector2d goal = Eigen::Vector2d::Zero();
   world::RoverPose end;
-  double distance_m = 0.0;  ///< ground driven
-  double goal_left_m = 0.0; ///< straight-line distance to the goal at the end
+  double distance_m = 0.0;   ///< ground driven
+  double goal_left_m = 0.0;  ///< straight-line distance to the goal at the end
+  world::RoverPose estimate; ///< where the rover believed it ended (dead-reckoned odometry)
   int emergency_stops = 0;
   int hand_overs = 0;
   std::vector<UnsafeEvent> unsafe_events;
@@ -101,6 +111,8 @@ struct TraverseResult {
   /// distance driven, as in SPL (Anderson et al. 2018); 0 otherwise.
   double path_efficiency() const;
   double mission_seconds() const { return driving_seconds + compute_seconds; }
+  /// Distance between the odometry's estimate and the true end.
+  double odometry_error_m() const;
 };
 
 /// Called after each cycle.
@@ -109,8 +121,9 @@ using TraverseProgress = std::function<void(const TraverseCycle&, const Traverse
 using CycleView = std::function<void(int cycle, const imaging::Image<std::uint8_t>& left,
                                      const nav::NavigationResult& navigation)>;
 
-/// The course's site: goal_m + 20 m a side, the seed, rocks and slope of the settings, the clear
-/// disc around the start (the rover at the west end facing east, the goal goal_m east of it).
+/// The course's site: a strip goal_m + 20 m east-west by 30 m north-south, the seed, rocks and
+/// slope of the settings, the clear disc around the start (the rover at the west end facing east,
+/// the goal goal_m east of it).
 world::TerrainSettings traverse_site(const TraverseSettings& settings);
 
 /// Runs the loop on `terrain` (made from traverse_site(settings)): render the pair from the rover's

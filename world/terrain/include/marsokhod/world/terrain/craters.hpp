@@ -33,10 +33,11 @@ struct Crater {
   double relief_at(double r) const;
 };
 
-/// Where craters go: a square of side extent_m centred on the origin, minus a clear disc.
+/// Where craters go: a rectangle of sides extent (east-west, north-south) centred on the origin,
+/// minus a clear disc.
 struct CraterField {
   double density_per_m2 = 0.004;
-  double extent_m = 48.0;
+  Eigen::Vector2d extent = Eigen::Vector2d::Constant(48.0);
   double clear_radius_m = 1.5;
   Eigen::Vector2d clear_centre = Eigen::Vector2d::Zero();
 };

@@ -59,10 +59,11 @@ struct Rock {
   double height_at(double dx, double dy) const;
 };
 
-/// Where rocks go: a square of side extent_m centred on the origin, minus a clear disc.
+/// Where rocks go: a rectangle of sides extent (east-west, north-south) centred on the origin,
+/// minus a clear disc.
 struct RockField {
   double rock_cover = 0.10;
-  double extent_m = 48.0;
+  Eigen::Vector2d extent = Eigen::Vector2d::Constant(48.0);
   double clear_radius_m = 1.5;
   Eigen::Vector2d clear_centre = Eigen::Vector2d::Zero();
 };

@@ -1,6 +1,8 @@
 // Seeded random numbers for the terrain: hash mixing, substreams and lattice values.
 #pragma once
 
+#include <Eigen/Core>
+
 #include <cstdint>
 #include <random>
 
@@ -41,6 +43,15 @@ public:
 private:
   std::mt19937_64 engine_;
 };
+
+/// A point uniform in the rectangle of sides `extent` (east-west, north-south) centred on the
+/// origin. North is drawn before east, in sequence: an argument list would leave the order to
+/// the compiler, and this is the order the sites have always been generated in.
+inline Eigen::Vector2d uniform_in_rectangle(const Eigen::Vector2d& extent, RandomStream& rng) {
+  const double north = rng.uniform(-0.5, 0.5) * extent.y();
+  const double east = rng.uniform(-0.5, 0.5) * extent.x();
+  return {east, north};
+}
 
 /// Labels of the generator's independent random streams; a component's numbers do not move
 /// when another component's settings change (a site without rocks has the same craters).
