@@ -1,7 +1,7 @@
-// One traverse trial as `eval traverse` runs it: the 100 m site generated, then every cycle's
-// render, native navigation and drive on the true ground, on one core. Target: at most 3 s a
-// trial at k = 0.10 (the sweep of 700 trials in 25 minutes on two cores). Also the site alone
-// and the loop alone, to say where the time goes.
+// One traverse trial as `eval traverse` runs it: the 100 m x 30 m site generated, then every
+// cycle's render, native navigation and drive on the true ground, on one core. Target: at most 3 s
+// a trial at k = 0.10 (the sweep of 700 trials in 25 minutes on two cores). Also the site alone and
+// the loop alone, to say where the time goes.
 
 #include "marsokhod/eval/traverse/traverse.hpp"
 

@@ -23,6 +23,12 @@ void add_course_options(CLI::App* app, eval::TraverseSettings& course) {
                   "0 drives every path to its end (the paper's scheme)")
       ->check(real_between(0.0, 20.0))
       ->capture_default_str();
+  app->add_option("--hazard-memory", course.hazard_memory_cycles,
+                  "Cycles whose steps and slopes the rover remembers to check the ground below "
+                  "its cameras' view that its next drives begin on; 0 keeps nothing between "
+                  "cycles, as the paper's navigation")
+      ->transform(integer_between(0, 10))
+      ->capture_default_str();
   app->add_option("--slip", course.slip,
                   "Mean wheel slip, 0..0.5: the ground gives each drive (1 - s) of what the "
                   "wheels turn, s drawn per drive around this mean, and the rover steers by its "

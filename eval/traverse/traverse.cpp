@@ -6,6 +6,7 @@
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
 #include "marsokhod/eval/traverse/ground_drive.hpp"
 #include "marsokhod/eval/traverse/odometry.hpp"
+#include "marsokhod/nav/cycle/hazard_memory.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav_program/run/navigation_program.hpp"
 #include "marsokhod/world/lighting/lit_surface.hpp"
@@ -103,7 +104,9 @@ class Loop {
 public:
   Loop(const TraverseSettings& s, const world::Terrain& terrain, const CycleView& view)
       : s_(s), course_(s, terrain), computer_(computer_for(s)), view_(view),
-        odometry_(start_of(s), s.slip, s.seed) {
+        odometry_(start_of(s), s.slip, s.seed), hazards_(std::max(1, s.hazard_memory_cycles)),
+        recall_radius_m_(unseen_start_radius(course_.rig, s.chassis) +
+                         imaging::footprint_reach_m(s.chassis)) {
     result_.settings = s;
     result_.start = start_of(s);
     result_.goal = Eigen::Vector2d(0.5 * s.goal_m, 0.0);
@@ -195,6 +198,12 @@ private:
         course_.renderer.render(course_.rig, placement, course_.surface, render);
     nav::NavigationOptions options;
     options.attitude = placement.attitude;
+    const world::RoverPose& believed = odometry_.estimate();
+    const imaging::PlanarPose at{believed.x, believed.y, believed.heading_deg / kDegreesPerRadian};
+    if (s_.hazard_memory_cycles > 0) {
+      recalled_ = hazards_.recall(at, recall_radius_m_);
+      options.footprint.remembered = recalled_;
+    }
     const Eigen::Vector2d to_goal = goal_from_estimate();
     const auto [near, far] = target_range(action, to_goal.norm());
     options.planner.target_min_m = near;
@@ -208,6 +217,8 @@ private:
                                     : nav::navigate(pair.left, pair.right, course_.rig, options);
     cycle.host_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (s_.hazard_memory_cycles > 0)
+      hazards_.remember(nav.terrain, nav.zones, at);
     result_.host_seconds += cycle.host_seconds;
     if (view_)
       view_(cycle.index, pair.left, nav);
@@ -298,6 +309,9 @@ private:
   const CycleView& view_;
   TraverseResult result_;
   Odometry odometry_;
+  nav::HazardMemory hazards_;
+  double recall_radius_m_;
+  std::vector<nav::GroundPoint> recalled_; ///< the points the cycle's options point at
   world::RoverPose pose_;
   GroundDriveLimits limits_;
   nav::MotionStatus status_;

@@ -24,6 +24,7 @@ json settings_json(const TraverseSettings& s) {
           {"light", s.light},
           {"goal_m", s.goal_m},
           {"drive_m", s.drive_m},
+          {"hazard_memory_cycles", s.hazard_memory_cycles},
           {"slip", s.slip},
           {"image_px", s.image_px},
           {"goal_tolerance_m", s.goal_tolerance_m},

@@ -31,6 +31,9 @@ void validate(const TraverseSettings& s) {
   if (!(s.drive_m >= 0.0 && s.drive_m <= 20.0))
     throw std::invalid_argument(
         fmt::format("traverse: drive = {} m must be within 0..20 (0: the whole path)", s.drive_m));
+  if (s.hazard_memory_cycles < 0 || s.hazard_memory_cycles > 10)
+    throw std::invalid_argument(fmt::format(
+        "traverse: hazard memory = {} cycles must be within 0..10", s.hazard_memory_cycles));
   if (!(s.slip >= 0.0 && s.slip <= 0.5))
     throw std::invalid_argument(fmt::format("traverse: slip = {} must be within 0..0.5", s.slip));
   if (s.max_cycles < 0)

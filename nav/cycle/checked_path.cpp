@@ -98,8 +98,14 @@ PathPlan checked_plan(const TerrainRows& terrain, ZoneMap& zones, const PlannerO
     if (!plan.found)
       break;
     const DrivePlan commands = plan_drive(ground_path(terrain, plan.pixels, memory), drive, memory);
-    const std::pmr::vector<FootprintConflict> conflicts = footprint_conflicts(
+    std::pmr::vector<FootprintConflict> conflicts = footprint_conflicts(
         terrain, zones, commands.commands, checked, options.conflicts_per_path, meter, memory);
+    if (conflicts.size() < options.conflicts_per_path && !options.remembered.empty()) {
+      const std::pmr::vector<FootprintConflict> remembered =
+          footprint_covers(options.remembered, commands.commands, checked,
+                           options.conflicts_per_path - conflicts.size(), meter, memory);
+      conflicts.insert(conflicts.end(), remembered.begin(), remembered.end());
+    }
     if (conflicts.empty()) {
       if (first)
         restore(zones, meter);

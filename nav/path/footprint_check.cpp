@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace marsokhod::nav {
 namespace {
@@ -88,7 +89,43 @@ bool under_turn(const Leg& leg, const imaging::Chassis& chassis, double reach, d
   return false;
 }
 
+// The first leg whose footprint covers (px, py), and whether it covers it turning.
+template <class Meter>
+std::optional<FootprintConflict> conflict_at(std::span<const Leg> legs,
+                                             const imaging::Chassis& chassis, double reach,
+                                             double px, double py, Meter& meter) {
+  for (std::size_t c = 0; c < legs.size(); ++c) {
+    const bool turning = under_turn(legs[c], chassis, reach, px, py, meter);
+    detail::report(meter, Work::footprint_test, 1);
+    if (turning || under_drive(legs[c], chassis, px, py))
+      return FootprintConflict{GroundPoint{px, py}, static_cast<int>(c), turning};
+  }
+  return std::nullopt;
+}
+
 } // namespace
+
+template <class Meter>
+std::pmr::vector<FootprintConflict>
+footprint_covers(std::span<const GroundPoint> points, std::span<const DriveCommand> commands,
+                 const imaging::Chassis& chassis, std::size_t limit, Meter& meter,
+                 std::pmr::memory_resource* memory) {
+  std::pmr::vector<FootprintConflict> conflicts(memory);
+  const std::pmr::vector<Leg> legs = legs_of(commands, memory);
+  const double reach = imaging::footprint_reach_m(chassis);
+  const Box box = reach_box(legs, reach);
+  detail::report(meter, Work::footprint_scan, static_cast<std::uint64_t>(points.size()));
+  for (const GroundPoint& p : points) {
+    if (conflicts.size() >= limit)
+      break;
+    if (!box.contains(p.x, p.y))
+      continue;
+    if (const auto conflict =
+            conflict_at(std::span<const Leg>(legs), chassis, reach, p.x, p.y, meter))
+      conflicts.push_back(*conflict);
+  }
+  return conflicts;
+}
 
 template <class Meter>
 std::pmr::vector<FootprintConflict>
@@ -110,14 +147,9 @@ footprint_conflicts(const TerrainRows& terrain, const ZoneMap& zones,
       const double py = row.left[x];
       if (!box.contains(px, py))
         continue;
-      for (std::size_t c = 0; c < legs.size(); ++c) {
-        const bool turning = under_turn(legs[c], chassis, reach, px, py, meter);
-        detail::report(meter, Work::footprint_test, 1);
-        if (!turning && !under_drive(legs[c], chassis, px, py))
-          continue;
-        conflicts.push_back({GroundPoint{px, py}, static_cast<int>(c), turning});
-        break;
-      }
+      if (const auto conflict =
+              conflict_at(std::span<const Leg>(legs), chassis, reach, px, py, meter))
+        conflicts.push_back(*conflict);
     }
   }
   return conflicts;
@@ -126,6 +158,9 @@ footprint_conflicts(const TerrainRows& terrain, const ZoneMap& zones,
 #define MARSOKHOD_INSTANTIATE(M)                                                                   \
   template std::pmr::vector<FootprintConflict> footprint_conflicts<M>(                             \
       const TerrainRows&, const ZoneMap&, std::span<const DriveCommand>, const imaging::Chassis&,  \
+      std::size_t, M&, std::pmr::memory_resource*);                                                \
+  template std::pmr::vector<FootprintConflict> footprint_covers<M>(                                \
+      std::span<const GroundPoint>, std::span<const DriveCommand>, const imaging::Chassis&,        \
       std::size_t, M&, std::pmr::memory_resource*);
 MARSOKHOD_NAV_FOR_EACH_METER(MARSOKHOD_INSTANTIATE)
 #undef MARSOKHOD_INSTANTIATE

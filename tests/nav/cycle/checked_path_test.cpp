@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace marsokhod::nav {
 namespace {
@@ -71,6 +72,30 @@ TEST(PlanCyclePath, SaysNoPathWhenEveryPathPutsTheFootprintOnAStep) {
   EXPECT_NE(plan.reason.find("footprint meets a step or slope 10.50 m ahead"), std::string::npos)
       << plan.reason;
   EXPECT_EQ(scene.zones.zone, before.zone);
+}
+
+// The view begins 2.0 m ahead; a wall of remembered steps 1.50 m ahead, across the whole
+// width the rover could turn into, lies on the drive to any start. Remembered steps far to the
+// side leave the plan as it was.
+TEST(PlanCyclePath, RefusesEveryPathWhoseDriveCrossesARememberedStep) {
+  CheckScene scene;
+  std::vector<GroundPoint> wall;
+  for (int k = -80; k <= 80; ++k)
+    wall.push_back({1.50, 0.05 * k});
+  FootprintCheckOptions remembering;
+  remembering.remembered = wall;
+  const PathPlan blocked =
+      plan_cycle_path(scene.terrain, scene.zones, PlannerOptions{}, DriveOptions{}, remembering);
+  EXPECT_FALSE(blocked.found);
+  EXPECT_NE(blocked.reason.find("1.50 m ahead"), std::string::npos) << blocked.reason;
+
+  const std::vector<GroundPoint> aside{{1.50, 6.0}, {1.50, -6.0}};
+  remembering.remembered = aside;
+  const PathPlan plan =
+      plan_cycle_path(scene.terrain, scene.zones, PlannerOptions{}, DriveOptions{}, remembering);
+  const PathPlan unchecked = plan_path(scene.terrain, scene.zones, PlannerOptions{});
+  ASSERT_TRUE(plan.found) << plan.reason;
+  EXPECT_EQ(plan.pixels, unchecked.pixels);
 }
 
 TEST(PlanCyclePath, WithoutTheCheckIsThePlannersPath) {

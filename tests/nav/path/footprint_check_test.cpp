@@ -77,6 +77,23 @@ TEST(FootprintConflicts, FindsAStepOnlyTheCornerSweepsTurningOnTheSpot) {
   EXPECT_TRUE(scene.conflicts({{0.0, 4.0}, {0.0, 0.5}}).empty()) << "without the turn";
 }
 
+// Given points, the same geometry: a 5 m drive's footprint reaches from 0.925 m behind the
+// centre to 5.925 m ahead, 0.60 m to either side.
+TEST(FootprintCovers, FindsTheGivenPointsUnderTheDriveInTheirOrder) {
+  const std::vector<GroundPoint> points{{1.0, 0.0},  {6.0, 0.0},    {3.0, 0.65},
+                                        {5.90, 0.0}, {-0.90, 0.55}, {-1.0, 0.0}};
+  const auto covered =
+      footprint_covers(points, std::vector<DriveCommand>{{0.0, 5.0}}, imaging::Chassis{}, 16);
+  ASSERT_EQ(covered.size(), 3U);
+  EXPECT_NEAR(covered[0].hazard.x, 1.0, 1e-12);
+  EXPECT_NEAR(covered[1].hazard.x, 5.90, 1e-12);
+  EXPECT_NEAR(covered[2].hazard.x, -0.90, 1e-12);
+  EXPECT_EQ(
+      footprint_covers(points, std::vector<DriveCommand>{{0.0, 5.0}}, imaging::Chassis{}, 1).size(),
+      1U)
+      << "at most the limit";
+}
+
 TEST(FootprintConflicts, IgnoresMarginAndUnknownGround) {
   FootprintScene scene;
   scene.mark(3.0, 0.0, Zone::margin);

@@ -32,6 +32,10 @@ struct TraverseSettings {
   /// How far along each planned path the rover drives before the next cycle looks again; 0:
   /// to the path's end, as the paper's scheme does.
   double drive_m = 0.0;
+  /// Cycles whose steps and slopes the rover remembers (nav::HazardMemory) to check the ground
+  /// its next drives begin on, below the cameras' view; 0 keeps nothing between cycles, as the
+  /// paper's navigation (docs/traverse.md: remembering did not make courses safer).
+  int hazard_memory_cycles = 0;
   /// Mean wheel slip, 0..0.5: the rover steers by dead-reckoned odometry (eval::Odometry) whose
   /// error grows with it; 0 is exact odometry.
   double slip = 0.0;

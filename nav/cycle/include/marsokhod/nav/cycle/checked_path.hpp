@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <memory_resource>
+#include <span>
 
 namespace marsokhod::nav {
 
@@ -31,6 +32,10 @@ struct FootprintCheckOptions {
   /// the ground the truth forbids. Across, the zones' margin already keeps the centre line
   /// half a width away, and a wider check would refuse every path along a margin's edge.
   double allowance_m = 0.10;
+  /// Steps and slopes earlier cycles saw, in this cycle's level frame (nav::HazardMemory):
+  /// the drive begins on ground just below the cameras' view, which this cycle cannot see.
+  /// Checked like the zones' own, after them; the points must outlive the cycle.
+  std::span<const GroundPoint> remembered;
 };
 
 /// Throws std::invalid_argument naming the first option out of range.

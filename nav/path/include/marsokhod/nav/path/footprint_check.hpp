@@ -40,4 +40,14 @@ footprint_conflicts(const TerrainRows& terrain, const ZoneMap& zones,
                     std::size_t limit, Meter& meter = null_meter,
                     std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
+/// The same test for given ground points (level frame), in their order: the points the
+/// footprint covers while the rover executes `commands`, at most `limit`. Reports
+/// Work::footprint_scan per point given and Work::footprint_test per point tested against a
+/// leg or a turn's pose.
+template <class Meter = NullMeter>
+std::pmr::vector<FootprintConflict>
+footprint_covers(std::span<const GroundPoint> points, std::span<const DriveCommand> commands,
+                 const imaging::Chassis& chassis, std::size_t limit, Meter& meter = null_meter,
+                 std::pmr::memory_resource* memory = std::pmr::get_default_resource());
+
 } // namespace marsokhod::nav
