@@ -1,7 +1,10 @@
 // The course options of `traverse` and `eval traverse`.
 #include "traverse/course_options.hpp"
 
+#include "cli/command.hpp"
 #include "cli/option_checks.hpp"
+
+#include <fmt/format.h>
 
 namespace marsokhod::apps {
 
@@ -35,9 +38,25 @@ void add_course_options(CLI::App* app, eval::TraverseSettings& course) {
                   "dead-reckoned odometry")
       ->check(real_between(0.0, 0.5))
       ->capture_default_str();
+  app->add_option("--faults", course.faults_file,
+                  "A campaign file (docs/faults.md) whose fault mix strikes the emulated computer "
+                  "once a course, in one of its first 8 cycles, the overswitch failing over; its "
+                  "platform must be --platform's");
   app->add_option("--goal-m", course.goal_m, "Straight-line distance from the start to the goal, m")
       ->check(real_between(5.0, 180.0))
       ->capture_default_str();
+}
+
+void check_course_faults(const eval::TraverseSettings& course) {
+  if (course.faults_file.empty())
+    return;
+  if (course.platform == "native")
+    throw UsageError("--faults strike the emulated computer: give --platform onboard or pc-card");
+  const eval::TraverseFaults faults(course.faults_file, course.seed);
+  if (faults.platform_name() != course.platform)
+    throw UsageError(
+        fmt::format("--faults: the campaign file {} runs on '{}', not on --platform '{}'",
+                    course.faults_file, faults.platform_name(), course.platform));
 }
 
 } // namespace marsokhod::apps

@@ -84,8 +84,7 @@ int run(SweepCli& cli) {
   cli.sweep.first_seed = seeds.first;
   cli.sweep.last_seed = seeds.last;
   cli.sweep.rocks = rock_list(cli.rocks);
-  if (cli.sweep.course.platform == "onboard")
-    cli.sweep.course.image_px = kOnboardImagePx;
+  check_course_faults(cli.sweep.course);
   if (cli.replay) {
     if (*cli.replay >= eval::sweep_trials(cli.sweep))
       throw UsageError(fmt::format("--replay {}: the sweep has trials 0..{}", *cli.replay,
@@ -141,6 +140,11 @@ Command add_traverse_evaluation(CLI::App& parent) {
   app->add_option("--rocks", cli->rocks, "Rock covers k, comma-separated, each 0..0.5")
       ->capture_default_str();
   add_course_options(app, cli->sweep.course);
+  app->add_option("--size", cli->sweep.course.image_px,
+                  "Stereo image width and height, pixels (onboard: 128 unless given, the size "
+                  "its two 256 KB modules hold)")
+      ->transform(integer_between(64, 512))
+      ->capture_default_str();
   app->add_option("--jobs", cli->sweep.jobs, "Worker processes")
       ->transform(integer_between(1, 64))
       ->capture_default_str();
@@ -149,7 +153,11 @@ Command add_traverse_evaluation(CLI::App& parent) {
                   "Run trial K alone and print its trials.jsonl line (nothing is written)")
       ->transform(integer_between<std::uint64_t>(0, 1000000));
   app->add_flag("--json", cli->json, "Print summary.json instead of the table");
-  return {app, [cli] { return run(*cli); }};
+  return {app, [cli, app] {
+            if (cli->sweep.course.platform == "onboard" && app->count("--size") == 0)
+              cli->sweep.course.image_px = kOnboardImagePx;
+            return run(*cli);
+          }};
 }
 
 } // namespace marsokhod::apps

@@ -59,6 +59,9 @@ void print_summary(const eval::TraverseResult& r, const std::string& out) {
              r.mission_seconds(), r.driving_seconds, r.compute_seconds, r.settings.platform);
   for (const eval::UnsafeEvent& e : r.unsafe_events)
     fmt::print("unsafe at ({:.2f}, {:.2f}): {}\n", e.x_m, e.y_m, e.why);
+  for (const eval::TraverseFault& f : r.faults)
+    fmt::print("fault in cycle {}: {}: {}, {} failover{}, {:.1f} s lost\n", f.cycle, f.fault,
+               f.outcome, f.failovers, f.failovers == 1 ? "" : "s", f.time_lost_s);
   if (!out.empty())
     fmt::print("results in {}/ (map.png, traverse.json, cycles.jsonl, views/cycle-NNN.png)\n", out);
 }
@@ -94,7 +97,8 @@ Command make_traverse_command(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand(
       "traverse", "Drive the rover across a synthetic site toward a goal, cycle after cycle, with "
                   "the paper's motion scheme, judged on the true ground.");
-  app->footer("The site is goal-m + 20 m a side; the rover starts at its west end facing east, "
+  app->footer("The site is a strip goal-m + 20 m long and 30 m wide; the rover starts at its west "
+              "end facing east, "
               "the goal lies goal-m east. Each cycle renders the pair from the rover's pose, "
               "navigates natively toward the goal, and drives the commands on the true ground "
               "with the inclinometer read every 0.25 m (emergency stop over 20 deg). Outcomes: "
@@ -105,6 +109,7 @@ Command make_traverse_command(CLI::App& parent) {
   return {app, [cli, app] {
             if (cli->settings.platform == "onboard" && app->count("--size") == 0)
               cli->settings.image_px = kOnboardImagePx;
+            check_course_faults(cli->settings);
             const bool live = !cli->json && ::isatty(STDERR_FILENO) != 0;
             // A folder that cannot be made is refused before the drive, not after it.
             if (!cli->out.empty())

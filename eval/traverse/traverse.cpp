@@ -62,20 +62,33 @@ struct Course {
         renderer(terrain) {}
 };
 
-// The emulated computer a cycle runs on, when not native.
+// The emulated computer a cycle runs on, when not native; with faults, the campaign file's.
 struct EmulatedComputer {
+  std::optional<TraverseFaults> faults;
   emulator::PlatformSpec platform;
   nav_program::Placement placement;
 
-  explicit EmulatedComputer(const std::string& name)
-      : platform(emulator::load_named_platform(name)),
-        placement(nav_program::load_program_placement(platform)) {}
+  explicit EmulatedComputer(const TraverseSettings& s)
+      : faults(faults_of(s)),
+        platform(faults ? faults->platform() : emulator::load_named_platform(s.platform)),
+        placement(faults ? faults->placement() : nav_program::load_program_placement(platform)) {}
+
+  static std::optional<TraverseFaults> faults_of(const TraverseSettings& s) {
+    if (s.faults_file.empty())
+      return std::nullopt;
+    std::optional<TraverseFaults> faults(std::in_place, s.faults_file, s.seed);
+    if (faults->platform_name() != s.platform)
+      throw std::invalid_argument(
+          fmt::format("traverse: the campaign file {} runs on '{}', not on '{}'", s.faults_file,
+                      faults->platform_name(), s.platform));
+    return faults;
+  }
 };
 
 std::optional<EmulatedComputer> computer_for(const TraverseSettings& s) {
   if (s.platform == "native")
     return std::nullopt;
-  return EmulatedComputer(s.platform);
+  return std::optional<EmulatedComputer>(std::in_place, s);
 }
 
 // The destination range: the scheme's, drawn in when the goal is nearer than its far end.
@@ -225,14 +238,33 @@ private:
     return nav;
   }
 
+  nav_program::CycleEmulation unsupervised(const nav_program::CycleInput& input) const {
+    nav_program::CycleSetup setup;
+    setup.platform = &computer_->platform;
+    setup.placement = &computer_->placement;
+    return nav_program::emulate_navigation_cycle(input, setup);
+  }
+
+  // The cycle under the overswitch, the course's fault striking when this is its cycle.
+  nav_program::CycleEmulation struck(const TraverseFaults& faults,
+                                     const nav_program::CycleInput& input, TraverseCycle& cycle) {
+    std::optional<TraverseFault> met;
+    nav_program::CycleEmulation run = faults.run(input, cycle.index, met);
+    if (met) {
+      cycle.events.push_back(fmt::format("fault: {}: {}, {} failover{}, {:.1f} s lost", met->fault,
+                                         met->outcome, met->failovers,
+                                         met->failovers == 1 ? "" : "s", met->time_lost_s));
+      result_.faults.push_back(*met);
+    }
+    return run;
+  }
+
   // The cycle on the emulated computer; its emulated time is mission time.
   nav::NavigationResult emulate(const world::StereoImages& pair,
                                 const nav::NavigationOptions& options, TraverseCycle& cycle) {
     nav_program::CycleInput input{pair.left, pair.right, &course_.rig, options, {}};
-    nav_program::CycleSetup setup;
-    setup.platform = &computer_->platform;
-    setup.placement = &computer_->placement;
-    const nav_program::CycleEmulation run = nav_program::emulate_navigation_cycle(input, setup);
+    const nav_program::CycleEmulation run =
+        computer_->faults ? struck(*computer_->faults, input, cycle) : unsupervised(input);
     cycle.compute_seconds = emulator::to_seconds(run.emulated);
     result_.compute_seconds += cycle.compute_seconds;
     if (run.result)

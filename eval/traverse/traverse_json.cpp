@@ -33,7 +33,8 @@ json settings_json(const TraverseSettings& s) {
           {"read_every_m", s.read_every_m},
           {"drive_speed_m_s", s.drive_speed_m_s},
           {"turn_rate_deg_s", s.turn_rate_deg_s},
-          {"platform", s.platform}};
+          {"platform", s.platform},
+          {"faults_file", s.faults_file}};
 }
 
 } // namespace
@@ -80,6 +81,15 @@ json traverse_json(const TraverseResult& r) {
   for (const UnsafeEvent& e : r.unsafe_events)
     unsafe.push_back({{"x_m", e.x_m}, {"y_m", e.y_m}, {"why", e.why}});
   doc["unsafe_events"] = unsafe;
+  json faults = json::array();
+  for (const TraverseFault& f : r.faults)
+    faults.push_back({{"cycle", f.cycle},
+                      {"fault", f.fault},
+                      {"outcome", f.outcome},
+                      {"recovered", f.recovered},
+                      {"failovers", f.failovers},
+                      {"time_lost_s", f.time_lost_s}});
+  doc["faults"] = faults;
   doc["mission_seconds"] = r.mission_seconds();
   doc["driving_seconds"] = r.driving_seconds;
   doc["compute_seconds"] = r.compute_seconds;

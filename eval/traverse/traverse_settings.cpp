@@ -40,6 +40,9 @@ void validate(const TraverseSettings& s) {
     throw std::invalid_argument("traverse: max_cycles must not be negative");
   imaging::validate(s.chassis);
   world::parse_light_preset(s.light);
+  if (!s.faults_file.empty() && s.platform == "native")
+    throw std::invalid_argument(
+        "traverse: faults strike the emulated computer: give an emulated platform with them");
   if (s.platform != "native" && s.platform != "pc-card" && s.platform != "onboard")
     throw std::invalid_argument(
         fmt::format("traverse: platform '{}' is not one of native, pc-card, onboard", s.platform));

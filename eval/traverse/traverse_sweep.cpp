@@ -48,6 +48,8 @@ std::string trial_line(const TraverseSweep& sweep, std::uint64_t trial) {
   line["mission_seconds"] = r.mission_seconds();
   line["driving_seconds"] = r.driving_seconds;
   line["compute_seconds"] = r.compute_seconds;
+  line["fault_outcome"] = r.faults.empty() ? "" : r.faults.front().outcome;
+  line["fault_time_lost_s"] = r.faults.empty() ? 0.0 : r.faults.front().time_lost_s;
   return line.dump();
 }
 
@@ -60,6 +62,7 @@ struct Tally {
   double hand_overs = 0.0;
   double mission = 0.0;
   double driving = 0.0;
+  std::map<std::string, std::uint64_t> faults; ///< fault outcome -> trials it struck
 };
 
 void add_trial(Tally& t, const nlohmann::json& line) {
@@ -72,6 +75,8 @@ void add_trial(Tally& t, const nlohmann::json& line) {
   t.hand_overs += line.at("hand_overs").get<double>();
   t.mission += line.at("mission_seconds").get<double>();
   t.driving += line.at("driving_seconds").get<double>();
+  if (const std::string fault = line.at("fault_outcome").get<std::string>(); !fault.empty())
+    ++t.faults[fault];
 }
 
 double per(double count, double per_amount, double amount) {
@@ -142,6 +147,7 @@ std::vector<RockFigures> sweep_figures(const TraverseSweep& sweep,
     f.hand_overs_per_100m = per(t.hand_overs, 100.0, t.distance);
     f.metres_per_hour = per(t.distance, 3600.0, t.mission);
     f.metres_per_hour_driving = per(t.distance, 3600.0, t.driving);
+    f.fault_outcomes = t.faults;
     figures.push_back(f);
   }
   return figures;
@@ -166,7 +172,8 @@ json sweep_json(const std::vector<RockFigures>& figures) {
                         {"emergency_stops_per_100m", f.emergency_stops_per_100m},
                         {"hand_overs_per_100m", f.hand_overs_per_100m},
                         {"metres_per_hour", f.metres_per_hour},
-                        {"metres_per_hour_driving", f.metres_per_hour_driving}});
+                        {"metres_per_hour_driving", f.metres_per_hour_driving},
+                        {"fault_outcomes", f.fault_outcomes}});
   }
   doc["trials"] = trials;
   doc["by_rocks"] = by_rocks;

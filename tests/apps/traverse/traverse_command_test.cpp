@@ -69,13 +69,34 @@ TEST(TraverseCommand, AnOutputFolderThatCannotBeMadeIsARuntimeErrorNamingIt) {
 }
 
 TEST(TraverseCommand, OptionsOutOfRangeAreUsageErrorsNamingTheOption) {
-  for (const std::string option : {"--rocks 0.6", "--slope 20", "--goal-m 2", "--light dusk",
-                                   "--size 16", "--max-cycles -1", "--seed x", "--platform cray"}) {
+  for (const std::string option :
+       {"--rocks 0.6", "--slope 20", "--goal-m 2", "--light dusk", "--size 16", "--max-cycles -1",
+        "--seed x", "--platform cray", "--slip 0.6", "--drive-m 21", "--hazard-memory 11"}) {
     const auto result = run_marsokhod("traverse " + option);
     EXPECT_EQ(result.exit_code, 2) << option;
     const std::string name = option.substr(0, option.find(' '));
     EXPECT_NE(result.err.find(name), std::string::npos) << option << ": " << result.err;
   }
+}
+
+// --faults strike the emulated computer: on the native one they are a usage error, as a
+// campaign file of another platform is; a campaign file that is not there is named.
+TEST(TraverseCommand, FaultsNeedTheCampaignsPlatformAndAFileThatReads) {
+  const std::string campaign =
+      (std::filesystem::path(MARSOKHOD_SOURCE_DIR) / "campaigns" / "hang-power.toml").string();
+  for (const std::string& command :
+       {"traverse --faults '" + campaign + "'",
+        "traverse --platform pc-card --faults '" + campaign + "'",
+        "eval traverse --seeds 1 --rocks 0 --faults '" + campaign + "'"}) {
+    const auto result = run_marsokhod(command);
+    EXPECT_EQ(result.exit_code, 2) << command;
+    EXPECT_NE(result.err.find("--faults"), std::string::npos) << command << ": " << result.err;
+  }
+  const std::filesystem::path missing = scratch("faults") / "no-such-campaign.toml";
+  const auto result =
+      run_marsokhod("traverse --platform onboard --faults '" + missing.string() + "'");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("no-such-campaign.toml"), std::string::npos) << result.err;
 }
 
 std::string read_all(const std::filesystem::path& file) {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,11 +15,11 @@ namespace marsokhod::eval {
 namespace {
 
 std::string trial(int k, const char* outcome, double distance, double efficiency, int stops,
-                  int hand_overs, double mission, double driving) {
+                  int hand_overs, double mission, double driving, const char* fault = "") {
   return fmt::format(R"({{"trial":{},"outcome":"{}","distance_m":{},"path_efficiency":{},)"
                      R"("emergency_stops":{},"hand_overs":{},"mission_seconds":{},)"
-                     R"("driving_seconds":{}}})",
-                     k, outcome, distance, efficiency, stops, hand_overs, mission, driving);
+                     R"("driving_seconds":{},"fault_outcome":"{}"}})",
+                     k, outcome, distance, efficiency, stops, hand_overs, mission, driving, fault);
 }
 
 TEST(TraverseSweep, FiguresPerRockCoverAreTheTrialsArithmetic) {
@@ -28,9 +29,9 @@ TEST(TraverseSweep, FiguresPerRockCoverAreTheTrialsArithmetic) {
   sweep.rocks = {0.0, 0.1};
   const std::vector<std::string> lines = {
       trial(0, "success", 80.0, 0.9, 1, 0, 900.0, 800.0),
-      trial(1, "success", 100.0, 0.8, 0, 0, 1100.0, 1000.0),
-      trial(2, "unsafe", 20.0, 0.0, 1, 0, 200.0, 200.0),
-      trial(3, "hand_over", 50.0, 0.0, 2, 1, 600.0, 500.0),
+      trial(1, "success", 100.0, 0.8, 0, 0, 1100.0, 1000.0, "recovered"),
+      trial(2, "unsafe", 20.0, 0.0, 1, 0, 200.0, 200.0, "safe_stop"),
+      trial(3, "hand_over", 50.0, 0.0, 2, 1, 600.0, 500.0, "recovered"),
       trial(4, "timeout", 50.0, 0.0, 0, 0, 600.0, 500.0),
       trial(5, "hand_over", 0.0, 0.0, 0, 1, 0.0, 0.0),
   };
@@ -54,6 +55,11 @@ TEST(TraverseSweep, FiguresPerRockCoverAreTheTrialsArithmetic) {
   EXPECT_EQ(f[1].outcomes.at("hand_over"), 2u);
   EXPECT_DOUBLE_EQ(f[1].success_rate, 0.0);
   EXPECT_DOUBLE_EQ(f[1].hand_overs_per_100m, 2.0 * 100.0 / 100.0);
+
+  // Only the trials a fault struck are counted, by the fault run's outcome.
+  EXPECT_EQ(f[0].fault_outcomes,
+            (std::map<std::string, std::uint64_t>{{"recovered", 1}, {"safe_stop", 1}}));
+  EXPECT_EQ(f[1].fault_outcomes, (std::map<std::string, std::uint64_t>{{"recovered", 1}}));
 }
 
 TEST(TraverseSweep, BadSweepsAreRefused) {

@@ -2,6 +2,7 @@
 // scheme, judged on the true ground.
 #pragma once
 
+#include "marsokhod/eval/traverse/traverse_faults.hpp"
 #include "marsokhod/imaging/image/image.hpp"
 #include "marsokhod/imaging/rig/chassis.hpp"
 #include "marsokhod/nav/cycle/motion_scheme.hpp"
@@ -29,6 +30,9 @@ struct TraverseSettings {
   /// ("pc-card", "onboard") whose emulated cycle time counts as mission time.
   std::string platform = "native";
   double goal_m = 80.0; ///< straight-line distance from the start to the goal
+  /// A campaign file (docs/faults.md) whose fault mix strikes the emulated computer once a
+  /// course (eval::TraverseFaults); its platform must be `platform`. Empty: no faults.
+  std::string faults_file;
   /// How far along each planned path the rover drives before the next cycle looks again; 0:
   /// to the path's end, as the paper's scheme does.
   double drive_m = 0.0;
@@ -105,7 +109,8 @@ struct TraverseResult {
   int emergency_stops = 0;
   int hand_overs = 0;
   std::vector<UnsafeEvent> unsafe_events;
-  double driving_seconds = 0.0; ///< driving and turning at the chassis's speeds
+  std::vector<TraverseFault> faults; ///< the emulated computer's fault, when it struck
+  double driving_seconds = 0.0;      ///< driving and turning at the chassis's speeds
   /// The navigation's time as mission time: 0 natively, the emulated cycles' on a platform.
   double compute_seconds = 0.0;
   double host_seconds = 0.0; ///< this machine's time for all cycles (not deterministic)

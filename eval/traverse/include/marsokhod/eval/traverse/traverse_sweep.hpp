@@ -59,6 +59,9 @@ struct RockFigures {
   double hand_overs_per_100m = 0.0;
   double metres_per_hour = 0.0;         ///< distance over mission time
   double metres_per_hour_driving = 0.0; ///< distance over driving time alone
+  /// The outcome classes of the emulated computer's faults (docs/faults.md) over the trials
+  /// one struck (--faults).
+  std::map<std::string, std::uint64_t> fault_outcomes;
 };
 
 /// The figures per rock cover, in the order of the sweep's list, from the trial lines.
