@@ -25,6 +25,7 @@ test: build
 	@ctest --preset $(PRESET)
 
 bench: build
+	@cmake --build --preset $(PRESET) --target benches
 	@sh scripts/run-benches.sh $(BUILD_DIR) $(OUT)/bench
 
 # AddressSanitizer + UBSan build (build/sanitize) of the io, imaging, emulator, occam,

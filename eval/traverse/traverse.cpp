@@ -4,8 +4,10 @@
 #include "marsokhod/emulator/kernel/time.hpp"
 #include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
+#include "marsokhod/eval/traverse/cycle_zones.hpp"
 #include "marsokhod/eval/traverse/ground_drive.hpp"
 #include "marsokhod/eval/traverse/odometry.hpp"
+#include "marsokhod/eval/traverse/traverse_map.hpp"
 #include "marsokhod/nav/cycle/hazard_memory.hpp"
 #include "marsokhod/nav/cycle/navigation.hpp"
 #include "marsokhod/nav_program/run/navigation_program.hpp"
@@ -320,6 +322,7 @@ private:
         world::place_rover(course_.terrain.height, pose_, s_.chassis);
     const nav::NavigationResult nav = navigate(placement, action, cycle);
     book_plan(placement, nav, cycle);
+    book_zones(placement, nav, kTraverseMapCellM, cycle);
     action = step({nav.found() ? nav::MotionEventKind::path_found : nav::MotionEventKind::no_path})
                  .action;
     if (action.then != nav::MotionAction::Then::drive)

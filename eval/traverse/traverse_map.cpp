@@ -15,6 +15,11 @@ constexpr Rgb kTrack{255, 220, 0};
 constexpr Rgb kStop{255, 0, 255};
 constexpr Rgb kStart{0, 230, 0};
 constexpr Rgb kGoal{255, 255, 255};
+constexpr Rgb kProhibited{255, 140, 0};
+constexpr Rgb kTurn{0, 220, 220};
+constexpr Rgb kFault{170, 60, 255};
+// What the cycles' zones made of a map pixel.
+enum Judged : std::uint8_t { kUnjudged = 0, kSeen = 1, kProhibitedCell = 2 };
 // Ground shown around the course, its plans and its tracks.
 constexpr double kMapMarginM = 5.0;
 
@@ -77,8 +82,33 @@ void circle(imaging::Image<std::uint8_t>& map, const MapFrame& f, const Eigen::V
   }
 }
 
-void hillshade(imaging::Image<std::uint8_t>& map, const MapFrame& f,
-               const world::Terrain& terrain) {
+// Every cycle's zones on the map's pixels; a prohibition outranks a free sighting.
+imaging::Image<std::uint8_t> judged_pixels(const MapFrame& f, const TraverseResult& result) {
+  imaging::Image<std::uint8_t> judged(f.width, f.height, 1, kUnjudged);
+  const auto mark = [&](const std::vector<Eigen::Vector2d>& points, Judged what) {
+    for (const Eigen::Vector2d& p : points) {
+      const Eigen::Vector2d px = f.pixel(p);
+      const auto x = static_cast<int>(std::floor(px.x()));
+      const auto y = static_cast<int>(std::floor(px.y()));
+      if (x >= 0 && y >= 0 && x < f.width && y < f.height && judged(x, y) < what)
+        judged(x, y) = what;
+    }
+  };
+  for (const TraverseCycle& cycle : result.cycles) {
+    mark(cycle.seen, kSeen);
+    mark(cycle.prohibited, kProhibitedCell);
+  }
+  return judged;
+}
+
+// Ground a cycle saw free: the hillshade tinted blue.
+Rgb seen_tint(std::uint8_t grey) {
+  return {static_cast<std::uint8_t>(grey * 0.6), static_cast<std::uint8_t>(grey * 0.75 + 20),
+          static_cast<std::uint8_t>(std::min(255.0, grey * 0.6 + 100.0))};
+}
+
+void hillshade(imaging::Image<std::uint8_t>& map, const MapFrame& f, const world::Terrain& terrain,
+               const imaging::Image<std::uint8_t>& judged) {
   const Eigen::Vector3d sun = Eigen::Vector3d(-1.0, 1.0, 1.5).normalized();
   const world::HeightField& h = terrain.height;
   for (int y = 0; y < f.height; ++y)
@@ -92,7 +122,12 @@ void hillshade(imaging::Image<std::uint8_t>& map, const MapFrame& f,
           static_cast<int>(std::lround((w.y() - h.node_position(0, 0).y()) / h.cell_m()));
       const bool obstacle = node_i >= 0 && node_j >= 0 && node_i < h.nx() && node_j < h.ny() &&
                             terrain.obstacles(node_i, node_j) != 0;
-      plot(map, x, y, obstacle ? kObstacle : Rgb{grey, grey, grey});
+      if (obstacle)
+        plot(map, x, y, kObstacle);
+      else if (judged(x, y) == kProhibitedCell)
+        plot(map, x, y, kProhibited);
+      else
+        plot(map, x, y, judged(x, y) == kSeen ? seen_tint(grey) : Rgb{grey, grey, grey});
     }
 }
 
@@ -136,7 +171,7 @@ imaging::Image<std::uint8_t> traverse_map(const world::Terrain& terrain,
                                           const TraverseResult& result) {
   const MapFrame f = frame_of(terrain, result);
   imaging::Image<std::uint8_t> map(f.width, f.height, 3, 0);
-  hillshade(map, f, terrain);
+  hillshade(map, f, terrain, judged_pixels(f, result));
   for (const TraverseCycle& cycle : result.cycles)
     polyline(map, f, cycle.planned, kPlan);
   for (const TraverseCycle& cycle : result.cycles)
@@ -148,6 +183,13 @@ imaging::Image<std::uint8_t> traverse_map(const world::Terrain& terrain,
     const Eigen::Vector2d at(event.x_m, event.y_m);
     segment(map, f, at + Eigen::Vector2d(-1, -1), at + Eigen::Vector2d(1, 1), kObstacle);
     segment(map, f, at + Eigen::Vector2d(-1, 1), at + Eigen::Vector2d(1, -1), kObstacle);
+  }
+  for (const TraverseCycle& cycle : result.cycles)
+    if (cycle.turned_deg != 0.0)
+      circle(map, f, Eigen::Vector2d(cycle.start.x, cycle.start.y), 0.6, kTurn);
+  for (const TraverseFault& fault : result.faults) {
+    const world::RoverPose& at = result.cycles.at(static_cast<std::size_t>(fault.cycle)).start;
+    square(map, f, Eigen::Vector2d(at.x, at.y), 3, kFault);
   }
   square(map, f, Eigen::Vector2d(result.start.x, result.start.y), 5, kStart);
   circle(map, f, result.goal, result.settings.goal_tolerance_m, kGoal);

@@ -87,6 +87,11 @@ struct TraverseCycle {
   double driven_m = 0.0;                ///< ground driven before the drive ended or stopped
   std::vector<Eigen::Vector2d> planned; ///< the planned polyline, world frame
   std::vector<Eigen::Vector2d> track;   ///< the driven centre line, world frame
+  /// The ground the cycle's zones judged, one point per map cell (kTraverseMapCellM), world
+  /// frame: free (traversable or margin) and prohibited (steps and slopes). For the map; not
+  /// written to cycles.jsonl.
+  std::vector<Eigen::Vector2d> seen;
+  std::vector<Eigen::Vector2d> prohibited;
   bool emergency_stop = false;
   /// Where the rover believed it began (dead-reckoned odometry) and the slip of its path drive.
   world::RoverPose estimate;
