@@ -70,7 +70,8 @@ run() {
   # into a memory fault whose message need not name the file.
   placement) set -- emulate --platform onboard --external-kb 4096 --placement "$file" --out "$dir" ;;
   # One scene and one run: the file is read whole, and a campaign that stays valid ends in time.
-  campaign) set -- campaign "$file" --runs 1 --seeds 2..2 --out "$dir" ;;
+  # A traverse reads the same file for its faults (--faults), on every other run.
+  campaign) if [ $((number % 2)) -eq 0 ]; then set -- campaign "$file" --runs 1 --seeds 2..2 --out "$dir"; else set -- traverse --platform onboard --faults "$file" --max-cycles 1 --goal-m 5 --size 64 --out "$dir"; fi ;;
   *) echo "hostile-cli: no command for reader $reader" >&2; return ;;
   esac
   (ulimit -v 4000000 && exec timeout 10 "$binary" "$@") >"$dir/stdout" 2>"$dir/stderr" </dev/null

@@ -41,4 +41,49 @@ CLI::Validator integer_one_of(std::vector<int> values) {
       description);
 }
 
+namespace {
+
+std::vector<std::string> comma_items(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', begin);
+    items.push_back(text.substr(begin, comma == std::string::npos ? comma : comma - begin));
+    if (comma == std::string::npos)
+      return items;
+    begin = comma + 1;
+  }
+}
+
+} // namespace
+
+CLI::Validator whole_number_list(std::uint64_t low, std::uint64_t high, std::size_t max_items) {
+  return detail::named_check(
+      [low, high, max_items](std::string& text) -> std::string {
+        const std::vector<std::string> items = comma_items(text);
+        if (items.size() > max_items)
+          return fmt::format("'{}' lists {} values, at most {} are taken", text, items.size(),
+                             max_items);
+        for (std::size_t i = 0; i < items.size(); ++i) {
+          if (items[i].empty())
+            return fmt::format("'{}': item {} is empty (write whole numbers separated by single "
+                               "commas, e.g. 64,128,256)",
+                               text, i + 1);
+          const std::optional<std::uint64_t> value = io::parse_integer<std::uint64_t>(items[i]);
+          if (!value || *value < low || *value > high)
+            return fmt::format("'{}': '{}' is not a whole number between {} and {}", text, items[i],
+                               low, high);
+        }
+        return {};
+      },
+      fmt::format("LIST of {}..{}", low, high));
+}
+
+std::vector<std::uint64_t> whole_numbers(const std::string& text) {
+  std::vector<std::uint64_t> numbers;
+  for (const std::string& item : comma_items(text))
+    numbers.push_back(io::parse_integer<std::uint64_t>(item).value_or(0));
+  return numbers;
+}
+
 } // namespace marsokhod::apps

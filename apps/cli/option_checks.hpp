@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include <concepts>
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -51,5 +53,14 @@ CLI::Validator integer_between(Int low, Int high) {
 /// A decimal integer that is one of `values` (e.g. the image sides 128 and 256); attach it with
 /// Option::transform, as integer_between.
 CLI::Validator integer_one_of(std::vector<int> values);
+
+/// A comma-separated list of at most `max_items` decimal integers, each between `low` and
+/// `high`, as integer_between reads one; an empty item ("64,,128", "64,") is refused, where
+/// CLI11's own splitting would silently drop it. Attach it with Option::check to a std::string
+/// option and read the checked text with whole_numbers().
+CLI::Validator whole_number_list(std::uint64_t low, std::uint64_t high, std::size_t max_items);
+
+/// The numbers of a list whole_number_list accepted.
+std::vector<std::uint64_t> whole_numbers(const std::string& text);
 
 } // namespace marsokhod::apps

@@ -10,6 +10,7 @@
 #include "navigation/nav_outputs.hpp"
 
 #include "marsokhod/emulator/platform/platform.hpp"
+#include "marsokhod/emulator/platform/platform_limits.hpp"
 #include "marsokhod/imaging/image/output_folder.hpp"
 #include "marsokhod/nav_program/run/navigation_program.hpp"
 
@@ -28,6 +29,9 @@ namespace {
 namespace fs = std::filesystem;
 namespace emu = emulator;
 
+/// A sweep runs one whole cycle per size.
+constexpr std::size_t kMaxSweepSizes = 64;
+
 struct EmulateCli {
   std::vector<fs::path> pair;
   std::optional<std::uint64_t> seed;
@@ -35,7 +39,7 @@ struct EmulateCli {
   std::string platform;
   std::optional<fs::path> placement;
   std::optional<std::uint64_t> external_kb;
-  std::vector<std::uint64_t> sweep_kb;
+  std::string sweep_kb; ///< checked by whole_number_list
   double occam_style = nav_program::kOccamStyleFactor;
   fs::path out = "emulate-out";
   std::optional<std::string> trace;
@@ -69,14 +73,15 @@ int run_sweep(const EmulateCli& cli, const emu::PlatformSpec& platform,
     throw UsageError("--sweep-external-kb runs one cycle per memory size: it takes neither "
                      "--external-kb nor --trace");
   std::vector<eval::SweepPoint> points;
-  const auto progress = [&cli](const eval::SweepPoint& point, std::size_t done) {
+  const std::vector<std::uint64_t> sizes_kb = whole_numbers(cli.sweep_kb);
+  const auto progress = [&cli, &sizes_kb](const eval::SweepPoint& point, std::size_t done) {
     if (!cli.json)
-      fmt::print(stderr, "sweep {}/{}: {} KB: {}\n", done, cli.sweep_kb.size(), point.external_kb,
+      fmt::print(stderr, "sweep {}/{}: {} KB: {}\n", done, sizes_kb.size(), point.external_kb,
                  point.memory_fault ? nav_program::describe(*point.memory_fault)
                                     : fmt::format("{:.3f} s", point.emulated_seconds));
   };
   try {
-    points = eval::sweep_external_memory(input, setup, cli.sweep_kb, progress);
+    points = eval::sweep_external_memory(input, setup, sizes_kb, progress);
   } catch (const std::invalid_argument& error) {
     throw CommandError(fmt::format("{}: {}", subject.pair, error.what()));
   }
@@ -172,13 +177,12 @@ Command make_emulate_command(CLI::App& parent) {
                   "Placement file (default: placements/<platform>.toml beside the platform file)");
   app->add_option("--external-kb", cli->external_kb,
                   "Replace every node's external memory by this many KB (what-if)")
-      ->transform(integer_between<std::uint64_t>(0, 4194300));
+      ->transform(integer_between<std::uint64_t>(0, emu::platform_limits::kMaxExternalKb));
   app->add_option("--sweep-external-kb", cli->sweep_kb,
                   "Run the cycle once for each of these external memory sizes, KB, comma-separated "
                   "(e.g. 64,128,256,512,1024,2048,4096), and write sweep.csv, sweep.json and "
                   "sweep.png")
-      ->delimiter(',')
-      ->transform(integer_between<std::uint64_t>(1, 4194300));
+      ->check(whole_number_list(1, emu::platform_limits::kMaxExternalKb, kMaxSweepSizes));
   app->add_option("--occam-style", cli->occam_style,
                   "Cycles of the program's occam per unit of work over the cost table's (the "
                   "model's fitted constant, docs/timing.md; 1 is the table's careful style)")

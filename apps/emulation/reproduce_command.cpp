@@ -7,6 +7,7 @@
 #include "emulation/reproduce_report.hpp"
 #include "emulation/sweep_report.hpp"
 
+#include "marsokhod/emulator/platform/platform_limits.hpp"
 #include "marsokhod/eval/common/errors.hpp"
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
 #include "marsokhod/imaging/image/image_io.hpp"
@@ -24,10 +25,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The sweep runs the onboard cycle once per size.
+constexpr std::size_t kMaxReproduceSweepSizes = 64;
+
 struct ReproduceCli {
   std::string seeds = "1..8";
-  std::vector<std::uint64_t> sweep_kb{32,  64,  96,  128, 160,  192,  224,  256,  320,
-                                      384, 512, 640, 768, 1024, 1536, 2048, 3072, 4096};
+  /// Checked by whole_number_list.
+  std::string sweep_kb =
+      "32,64,96,128,160,192,224,256,320,384,512,640,768,1024,1536,2048,3072,4096";
   fs::path out = "reproduce-out";
   bool json = false;
 };
@@ -76,11 +81,11 @@ std::map<std::string, fs::path> write_outputs(const ReproduceCli& cli,
 
 int run_reproduce(const ReproduceCli& cli) {
   imaging::prepare_output_folder(cli.out);
-  const eval::Reproduction r =
-      eval::reproduce(seed_list(cli.seeds), cli.sweep_kb, [&cli](const std::string& text) {
-        if (!cli.json)
-          fmt::print(stderr, "{}\n", text);
-      });
+  const eval::Reproduction r = eval::reproduce(seed_list(cli.seeds), whole_numbers(cli.sweep_kb),
+                                               [&cli](const std::string& text) {
+                                                 if (!cli.json)
+                                                   fmt::print(stderr, "{}\n", text);
+                                               });
   const auto written = write_outputs(cli, r);
   if (cli.json) {
     nlohmann::ordered_json json = r;
@@ -109,9 +114,9 @@ Command make_reproduce_command(CLI::App& parent) {
   app->add_option("--sweep-external-kb", cli->sweep_kb,
                   fmt::format("External memory sizes of the onboard sweep, KB, comma-separated "
                               "(default {})",
-                              fmt::join(cli->sweep_kb, ",")))
-      ->delimiter(',')
-      ->transform(integer_between<std::uint64_t>(1, 4194300));
+                              cli->sweep_kb))
+      ->check(
+          whole_number_list(1, emulator::platform_limits::kMaxExternalKb, kMaxReproduceSweepSizes));
   app->add_option("--out", cli->out, "Output folder (created if missing)")->capture_default_str();
   app->add_flag("--json", cli->json, "Print the reproduction as JSON on stdout");
   return {app, [cli] { return run_reproduce(*cli); }};

@@ -6,6 +6,7 @@
 #include "cli/progress_bar.hpp"
 #include "cli/trace_file.hpp"
 #include "faults/campaign_report.hpp"
+#include "navigation/seed_option.hpp"
 
 #include "marsokhod/eval/campaign/campaign_platform.hpp"
 #include "marsokhod/eval/campaign/campaign_runs.hpp"
@@ -39,24 +40,15 @@ struct CampaignCli {
   bool json = false;
 };
 
-/// "A..B" (inclusive) as the list A, A+1, ..., B.
+/// A campaign's runs each render their world seeds' scenes: a thousand is plenty.
+constexpr std::uint64_t kMaxCampaignSeeds = 1000;
+
+/// "A..B" (inclusive) or "A" as the list A, A+1, ..., B, read as every evaluation reads --seeds.
 std::vector<std::uint64_t> seed_range(const std::string& text) {
-  const std::size_t dots = text.find("..");
-  const auto number = [&text](const std::string& part) {
-    if (part.empty() || part.find_first_not_of("0123456789") != std::string::npos ||
-        part.size() > 18)
-      throw UsageError(fmt::format("--seeds '{}': write A..B with whole numbers, e.g. 1..8", text));
-    return std::stoull(part);
-  };
-  if (dots == std::string::npos)
-    throw UsageError(fmt::format("--seeds '{}': write A..B with whole numbers, e.g. 1..8", text));
-  const std::uint64_t first = number(text.substr(0, dots));
-  const std::uint64_t last = number(text.substr(dots + 2));
-  if (last < first || last - first >= 1000)
-    throw UsageError(fmt::format("--seeds '{}': B must be at least A and at most A + 999", text));
+  const eval::SeedRange range = seed_range_option(text, kMaxCampaignSeeds);
   std::vector<std::uint64_t> seeds;
-  for (std::uint64_t s = first; s <= last; ++s)
-    seeds.push_back(s);
+  for (std::uint64_t offset = 0; offset <= range.last - range.first; ++offset)
+    seeds.push_back(range.first + offset);
   return seeds;
 }
 

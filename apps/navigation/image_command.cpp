@@ -46,9 +46,7 @@ std::string text_value(const std::optional<double>& value) {
 }
 
 int run_info(const InfoOptions& options) {
-  const imaging::AnyImage image = imaging::read_image(options.file);
-  const ImageDescription info =
-      std::visit([&](const auto& pixels) { return describe_image(options.file, pixels); }, image);
+  const ImageDescription info = describe_image_file(options.file);
   if (options.json) {
     fmt::print("{}\n", nlohmann::json(info).dump());
     return kSuccess;

@@ -2,10 +2,13 @@
 
 #include "navigation/image_description.hpp"
 
+#include "marsokhod/imaging/image/image_scan.hpp"
+
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <limits>
+#include <type_traits>
+#include <variant>
 
 namespace marsokhod::apps {
 namespace {
@@ -18,36 +21,24 @@ struct SampleStats {
   std::uint64_t non_finite = 0;
 };
 
-// The container named by the file's magic bytes, which is also what read_image trusts.
-std::string format_name(const std::string& file) {
-  std::ifstream stream(file, std::ios::binary);
-  char magic[2] = {};
-  stream.read(magic, 2);
-  if (magic[0] == 'P' && magic[1] == '5')
-    return "pgm";
-  if (magic[0] == 'P' && magic[1] == '6')
-    return "ppm";
-  if (magic[0] == 'P' && (magic[1] == 'f' || magic[1] == 'F'))
-    return "pfm";
-  return "png";
-}
-
 template <class T>
-SampleStats sample_stats(const imaging::Image<T>& image) {
-  SampleStats stats;
-  const T* samples = image.data();
-  for (std::size_t i = 0; i < image.size(); ++i) {
-    const double value = static_cast<double>(samples[i]);
-    if (!std::isfinite(value)) {
-      ++stats.non_finite;
-      continue;
+void add_samples(imaging::ImageView<const T> strip, SampleStats& stats) {
+  for (int y = 0; y < strip.height(); ++y) {
+    const T* row = strip.row(y);
+    const std::size_t samples =
+        static_cast<std::size_t>(strip.width()) * static_cast<std::size_t>(strip.channels());
+    for (std::size_t i = 0; i < samples; ++i) {
+      const double value = static_cast<double>(row[i]);
+      if (!std::isfinite(value)) {
+        ++stats.non_finite;
+        continue;
+      }
+      stats.min = std::min(stats.min, value);
+      stats.max = std::max(stats.max, value);
+      stats.sum += value;
+      ++stats.finite;
     }
-    stats.min = std::min(stats.min, value);
-    stats.max = std::max(stats.max, value);
-    stats.sum += value;
-    ++stats.finite;
   }
-  return stats;
 }
 
 template <class T>
@@ -62,21 +53,27 @@ constexpr const char* sample_type() {
 
 } // namespace
 
-template <class T>
-ImageDescription describe_image(const std::string& file, const imaging::Image<T>& image) {
-  const SampleStats stats = sample_stats(image);
-  ImageDescription d{file,
-                     format_name(file),
-                     image.width(),
-                     image.height(),
-                     image.channels(),
-                     8 * sizeof(T),
-                     sample_type<T>(),
-                     stats.finite,
-                     stats.non_finite,
-                     {},
-                     {},
-                     {}};
+ImageDescription describe_image_file(const std::string& file) {
+  SampleStats stats;
+  ImageDescription d;
+  const imaging::ImageFileHeader header =
+      imaging::scan_image(file, [&](int, const imaging::ImageStrip& strip) {
+        std::visit(
+            [&](const auto& view) {
+              using T = std::remove_const_t<std::remove_pointer_t<decltype(view.data())>>;
+              d.bit_depth = 8 * sizeof(T);
+              d.sample_type = sample_type<T>();
+              add_samples(view, stats);
+            },
+            strip);
+      });
+  d.file = file;
+  d.format = header.format;
+  d.width = header.width;
+  d.height = header.height;
+  d.channels = header.channels;
+  d.finite = stats.finite;
+  d.non_finite = stats.non_finite;
   if (stats.finite == 0)
     return d;
   d.min = stats.min;
@@ -84,10 +81,6 @@ ImageDescription describe_image(const std::string& file, const imaging::Image<T>
   d.mean = stats.sum / static_cast<double>(stats.finite);
   return d;
 }
-
-template ImageDescription describe_image(const std::string&, const imaging::Image<std::uint8_t>&);
-template ImageDescription describe_image(const std::string&, const imaging::Image<std::uint16_t>&);
-template ImageDescription describe_image(const std::string&, const imaging::Image<float>&);
 
 void to_json(nlohmann::json& json, const ImageDescription& d) {
   const auto or_null = [](const std::optional<double>& v) {

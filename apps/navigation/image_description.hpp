@@ -28,9 +28,9 @@ struct ImageDescription {
   std::optional<double> mean;
 };
 
-/// Instantiated for 8- and 16-bit and float images.
-template <class T>
-ImageDescription describe_image(const std::string& file, const imaging::Image<T>& image);
+/// Reads the file strip by strip (imaging::scan_image): memory stays small however large the
+/// image. Throws imaging::ImageError for a file read_image would refuse.
+ImageDescription describe_image_file(const std::string& file);
 
 /// {file, format, width, height, channels, bit_depth, sample_type, finite, non_finite, min,
 /// max, mean (null without a finite sample)}.

@@ -22,8 +22,6 @@
 namespace marsokhod::eval {
 namespace {
 
-constexpr std::uint64_t kMaxSeeds = 10000;
-
 void write_picture(const std::string& folder, std::uint64_t seed, const TerrainComparison& site) {
   const std::filesystem::path path =
       std::filesystem::path(folder) / fmt::format("seed-{}.png", seed);
@@ -81,7 +79,7 @@ double unseen_start_radius(const imaging::StereoRig& rig, const imaging::Chassis
   return std::max(radius, world::TerrainSettings{}.clear_radius_m);
 }
 
-SeedRange parse_seed_range(const std::string& text) {
+SeedRange parse_seed_range(const std::string& text, std::uint64_t max_seeds) {
   const std::size_t dots = text.find("..");
   const std::string_view whole(text);
   const std::optional<std::uint64_t> first =
@@ -94,8 +92,8 @@ SeedRange parse_seed_range(const std::string& text) {
                                   text, std::numeric_limits<std::uint64_t>::max()));
   if (*last < *first)
     throw OptionError(fmt::format("'{}': the last seed is below the first", text));
-  if (*last - *first >= kMaxSeeds)
-    throw OptionError(fmt::format("'{}': at most {} seeds at a time", text, kMaxSeeds));
+  if (*last - *first >= max_seeds)
+    throw OptionError(fmt::format("'{}': at most {} seeds at a time", text, max_seeds));
   return {*first, *last};
 }
 

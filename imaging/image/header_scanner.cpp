@@ -118,4 +118,12 @@ void HeaderScanner::fail_here(std::string_view problem) const {
   fail(name_, problem);
 }
 
+void HeaderScanner::read_size(int& width, int& height) {
+  skip_separator("the magic number");
+  width = read_number("width", 1, kMaxImageSide);
+  skip_separator("the width");
+  height = read_number("height", 1, kMaxImageSide);
+  skip_separator("the height");
+}
+
 } // namespace marsokhod::imaging::detail

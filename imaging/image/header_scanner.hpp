@@ -31,6 +31,10 @@ public:
   /// Reads an unsigned decimal number that must lie in lo..hi; `what` names it in messages.
   int read_number(std::string_view what, int lo, int hi);
 
+  /// Skips the separator after the magic number, then reads the width and the height (each
+  /// 1..kMaxImageSide) and the separator after them, as PNM and PFM headers put them.
+  void read_size(int& width, int& height);
+
   /// Reads bytes up to the next whitespace (at most max_length of them).
   std::string read_token(std::string_view what, std::size_t max_length);
 

@@ -69,6 +69,41 @@ private:
   std::uint64_t position_ = 0;
 };
 
+/// Where a PGM, PPM or PFM file's raster lies and how its samples are stored.
+struct RasterLayout {
+  ImageFormat format = ImageFormat::pgm;
+  int width = 0;
+  int height = 0;
+  int channels = 1;
+  int maxval = 0;             ///< PNM; 0 for PFM
+  bool little_endian = false; ///< PFM: a negative scale
+  std::size_t raster_offset = 0;
+  std::size_t sample_bytes = 1;
+
+  std::size_t row_samples() const {
+    return static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
+  }
+  std::size_t row_bytes() const { return row_samples() * sample_bytes; }
+  std::size_t raster_bytes() const { return row_bytes() * static_cast<std::size_t>(height); }
+};
+
+/// The layout a PGM/PPM or PFM header gives, from the file's first bytes `head`; ImageError for
+/// a bad header. `head_is_cut`: the file goes on beyond `head`.
+RasterLayout pnm_layout(std::span<const std::uint8_t> head, std::string_view name,
+                        bool head_is_cut = false);
+RasterLayout pfm_layout(std::span<const std::uint8_t> head, std::string_view name,
+                        bool head_is_cut = false);
+
+/// Converts `count` raw big-endian PNM samples, the first being sample `first` of the raster, to
+/// `out`; ImageError naming the pixel of a sample above maxval.
+void load_pnm_samples(const std::uint8_t* raw, std::size_t count, std::size_t first,
+                      const RasterLayout& layout, std::uint8_t* out, std::string_view name);
+void load_pnm_samples(const std::uint8_t* raw, std::size_t count, std::size_t first,
+                      const RasterLayout& layout, std::uint16_t* out, std::string_view name);
+
+/// One PFM row of raw bytes to floats in the byte order of the layout.
+void load_pfm_row(const std::uint8_t* raw, const RasterLayout& layout, float* out);
+
 /// Bytes a PGM/PPM (pnm) or PFM file needs, header plus raster, from its first bytes `head`.
 /// `head_is_cut`: the file goes on beyond `head`, so a header running to its end is too long.
 std::size_t pnm_file_extent(std::span<const std::uint8_t> head, std::string_view name,

@@ -20,8 +20,11 @@ constexpr std::size_t kMaxScaleLength = 64;
 double parse_scale(const std::string& token, std::string_view name) {
   const char* first = token.data();
   const char* last = token.data() + token.size();
+  // from_chars takes no '+', and one '+' may only be followed by the number itself.
   if (first != last && *first == '+')
     ++first;
+  if (first != token.data() && first != last && (*first == '-' || *first == '+'))
+    fail(name, fmt::format("scale '{}' is not a finite decimal number", token));
   double scale = 0.0;
   const auto [end, error] = std::from_chars(first, last, scale);
   if (error != std::errc{} || end != last || !std::isfinite(scale))
@@ -40,69 +43,47 @@ float load_float(const std::uint8_t* bytes, bool little_endian) {
   return std::bit_cast<float>(bits);
 }
 
-struct PfmHeader {
-  int channels = 1;
-  int width = 0;
-  int height = 0;
-  double scale = 0.0;
-  std::size_t raster_offset = 0;
+} // namespace
 
-  std::size_t row_samples() const {
-    return static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
-  }
-  std::size_t raster_bytes() const {
-    return row_samples() * static_cast<std::size_t>(height) * sizeof(float);
-  }
-};
-
-PfmHeader read_pfm_header(std::span<const std::uint8_t> bytes, std::string_view name,
-                          bool cut = false) {
-  if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != 'f' && bytes[1] != 'F'))
+RasterLayout pfm_layout(std::span<const std::uint8_t> head, std::string_view name,
+                        bool head_is_cut) {
+  if (head.size() < 2 || head[0] != 'P' || (head[1] != 'f' && head[1] != 'F'))
     fail(name, "not a PFM file (magic Pf or PF expected)");
-  PfmHeader header;
-  header.channels = bytes[1] == 'F' ? 3 : 1;
-  HeaderScanner scanner(bytes.subspan(2), name, /*comments=*/false, cut);
-  scanner.skip_separator("the magic number");
-  header.width = scanner.read_number("width", 1, kMaxImageSide);
-  scanner.skip_separator("the width");
-  header.height = scanner.read_number("height", 1, kMaxImageSide);
-  scanner.skip_separator("the height");
-  header.scale = parse_scale(scanner.read_token("scale", kMaxScaleLength), name);
+  RasterLayout layout;
+  layout.format = ImageFormat::pfm;
+  layout.channels = head[1] == 'F' ? 3 : 1;
+  layout.sample_bytes = sizeof(float);
+  HeaderScanner scanner(head.subspan(2), name, /*comments=*/false, head_is_cut);
+  scanner.read_size(layout.width, layout.height);
+  layout.little_endian = parse_scale(scanner.read_token("scale", kMaxScaleLength), name) < 0.0;
   scanner.expect_single_whitespace("the scale");
-  header.raster_offset = 2 + scanner.position();
-  return header;
+  layout.raster_offset = 2 + scanner.position();
+  return layout;
 }
 
-} // namespace
+void load_pfm_row(const std::uint8_t* raw, const RasterLayout& layout, float* out) {
+  const std::size_t samples = layout.row_samples();
+  for (std::size_t i = 0; i < samples; ++i)
+    out[i] = load_float(raw + i * 4, layout.little_endian);
+}
 
 std::size_t pfm_file_extent(std::span<const std::uint8_t> head, std::string_view name,
                             bool head_is_cut) {
-  const PfmHeader header = read_pfm_header(head, name, head_is_cut);
-  return header.raster_offset + header.raster_bytes();
+  const RasterLayout layout = pfm_layout(head, name, head_is_cut);
+  return layout.raster_offset + layout.raster_bytes();
 }
 
 DecodedImage decode_pfm(std::span<const std::uint8_t> bytes, std::string_view name) {
-  const PfmHeader header = read_pfm_header(bytes, name);
-  const int width = header.width;
-  const int height = header.height;
-  const int channels = header.channels;
-  const double scale = header.scale;
-  const std::span<const std::uint8_t> raster = bytes.subspan(header.raster_offset);
-  const std::size_t row_samples = header.row_samples();
-  const std::size_t expected = header.raster_bytes();
+  const RasterLayout layout = pfm_layout(bytes, name);
+  const std::span<const std::uint8_t> raster = bytes.subspan(layout.raster_offset);
+  const std::size_t expected = layout.raster_bytes();
   if (raster.size() < expected)
     fail(name,
          fmt::format("truncated pixel data: expected {} bytes, found {}", expected, raster.size()));
-
-  const bool little_endian = scale < 0.0;
-  Image<float> image(width, height, channels);
-  for (int file_row = 0; file_row < height; ++file_row) {
-    const std::uint8_t* source =
-        raster.data() + static_cast<std::size_t>(file_row) * row_samples * 4;
-    float* target = image.row(height - 1 - file_row);
-    for (std::size_t i = 0; i < row_samples; ++i)
-      target[i] = load_float(source + i * 4, little_endian);
-  }
+  Image<float> image(layout.width, layout.height, layout.channels);
+  for (int file_row = 0; file_row < layout.height; ++file_row)
+    load_pfm_row(raster.data() + static_cast<std::size_t>(file_row) * layout.row_bytes(), layout,
+                 image.row(layout.height - 1 - file_row));
   DecodedImage decoded;
   decoded.pixels = std::move(image);
   decoded.format = ImageFormat::pfm;

@@ -8,59 +8,28 @@
 namespace marsokhod::imaging::detail {
 namespace {
 
-struct PnmHeader {
-  ImageFormat format = ImageFormat::pgm;
-  int channels = 1;
-  int width = 0;
-  int height = 0;
-  int maxval = 0;
-  std::size_t raster_offset = 0;
-};
-
-PnmHeader read_pnm_header(std::span<const std::uint8_t> bytes, std::string_view name,
-                          bool cut = false) {
-  PnmHeader header;
-  if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '5' && bytes[1] != '6'))
-    fail(name, "not a binary PGM/PPM file (magic P5 or P6 expected)");
-  if (bytes[1] == '6') {
-    header.format = ImageFormat::ppm;
-    header.channels = 3;
+template <class T>
+void load_samples(const std::uint8_t* raw, std::size_t count, std::size_t first,
+                  const RasterLayout& layout, T* out, std::string_view name) {
+  for (std::size_t i = 0; i < count; ++i) {
+    unsigned value = raw[i * sizeof(T)];
+    if constexpr (sizeof(T) == 2)
+      value = (value << 8) | raw[i * 2 + 1];
+    if (value > static_cast<unsigned>(layout.maxval)) {
+      const std::size_t pixel = (first + i) / static_cast<std::size_t>(layout.channels);
+      fail(name, fmt::format("sample value {} exceeds maxval {} at pixel ({}, {})", value,
+                             layout.maxval, pixel % static_cast<std::size_t>(layout.width),
+                             pixel / static_cast<std::size_t>(layout.width)));
+    }
+    out[i] = static_cast<T>(value);
   }
-  HeaderScanner scanner(bytes.subspan(2), name, /*comments=*/true, cut);
-  scanner.skip_separator("the magic number");
-  header.width = scanner.read_number("width", 1, kMaxImageSide);
-  scanner.skip_separator("the width");
-  header.height = scanner.read_number("height", 1, kMaxImageSide);
-  scanner.skip_separator("the height");
-  header.maxval = scanner.read_number("maxval", 1, 65535);
-  scanner.expect_single_whitespace("maxval");
-  header.raster_offset = 2 + scanner.position();
-  return header;
-}
-
-std::size_t raster_bytes(const PnmHeader& header) {
-  const std::size_t sample_bytes = header.maxval > 255 ? 2 : 1;
-  return static_cast<std::size_t>(header.width) * static_cast<std::size_t>(header.height) *
-         static_cast<std::size_t>(header.channels) * sample_bytes;
 }
 
 template <class T>
-Image<T> read_raster(std::span<const std::uint8_t> raster, const PnmHeader& header,
+Image<T> read_raster(std::span<const std::uint8_t> raster, const RasterLayout& layout,
                      std::string_view name) {
-  Image<T> image(header.width, header.height, header.channels);
-  const std::size_t samples = image.size();
-  for (std::size_t i = 0; i < samples; ++i) {
-    unsigned value = raster[i * sizeof(T)];
-    if constexpr (sizeof(T) == 2)
-      value = (value << 8) | raster[i * 2 + 1];
-    if (value > static_cast<unsigned>(header.maxval)) {
-      const std::size_t pixel = i / static_cast<std::size_t>(header.channels);
-      fail(name, fmt::format("sample value {} exceeds maxval {} at pixel ({}, {})", value,
-                             header.maxval, pixel % static_cast<std::size_t>(header.width),
-                             pixel / static_cast<std::size_t>(header.width)));
-    }
-    image.data()[i] = static_cast<T>(value);
-  }
+  Image<T> image(layout.width, layout.height, layout.channels);
+  load_samples(raster.data(), image.size(), 0, layout, image.data(), name);
   return image;
 }
 
@@ -86,29 +55,56 @@ std::vector<std::uint8_t> encode(ImageView<const T> image, int maxval) {
 
 } // namespace
 
+RasterLayout pnm_layout(std::span<const std::uint8_t> head, std::string_view name,
+                        bool head_is_cut) {
+  RasterLayout layout;
+  if (head.size() < 2 || head[0] != 'P' || (head[1] != '5' && head[1] != '6'))
+    fail(name, "not a binary PGM/PPM file (magic P5 or P6 expected)");
+  if (head[1] == '6') {
+    layout.format = ImageFormat::ppm;
+    layout.channels = 3;
+  }
+  HeaderScanner scanner(head.subspan(2), name, /*comments=*/true, head_is_cut);
+  scanner.read_size(layout.width, layout.height);
+  layout.maxval = scanner.read_number("maxval", 1, 65535);
+  scanner.expect_single_whitespace("maxval");
+  layout.raster_offset = 2 + scanner.position();
+  layout.sample_bytes = layout.maxval > 255 ? 2 : 1;
+  return layout;
+}
+
+void load_pnm_samples(const std::uint8_t* raw, std::size_t count, std::size_t first,
+                      const RasterLayout& layout, std::uint8_t* out, std::string_view name) {
+  load_samples(raw, count, first, layout, out, name);
+}
+
+void load_pnm_samples(const std::uint8_t* raw, std::size_t count, std::size_t first,
+                      const RasterLayout& layout, std::uint16_t* out, std::string_view name) {
+  load_samples(raw, count, first, layout, out, name);
+}
+
 DecodedImage decode_pnm(std::span<const std::uint8_t> bytes, std::string_view name) {
-  const PnmHeader header = read_pnm_header(bytes, name);
-  const std::size_t sample_bytes = header.maxval > 255 ? 2 : 1;
-  const std::size_t expected = raster_bytes(header);
-  const std::span<const std::uint8_t> raster = bytes.subspan(header.raster_offset);
+  const RasterLayout layout = pnm_layout(bytes, name);
+  const std::size_t expected = layout.raster_bytes();
+  const std::span<const std::uint8_t> raster = bytes.subspan(layout.raster_offset);
   // Checked before allocating, so a lying header cannot make us reserve gigabytes.
   if (raster.size() < expected)
     fail(name,
          fmt::format("truncated pixel data: expected {} bytes, found {}", expected, raster.size()));
   DecodedImage decoded;
-  decoded.format = header.format;
-  decoded.maxval = header.maxval;
-  if (sample_bytes == 1)
-    decoded.pixels = read_raster<std::uint8_t>(raster, header, name);
+  decoded.format = layout.format;
+  decoded.maxval = layout.maxval;
+  if (layout.sample_bytes == 1)
+    decoded.pixels = read_raster<std::uint8_t>(raster, layout, name);
   else
-    decoded.pixels = read_raster<std::uint16_t>(raster, header, name);
+    decoded.pixels = read_raster<std::uint16_t>(raster, layout, name);
   return decoded;
 }
 
 std::size_t pnm_file_extent(std::span<const std::uint8_t> head, std::string_view name,
                             bool head_is_cut) {
-  const PnmHeader header = read_pnm_header(head, name, head_is_cut);
-  return header.raster_offset + raster_bytes(header);
+  const RasterLayout layout = pnm_layout(head, name, head_is_cut);
+  return layout.raster_offset + layout.raster_bytes();
 }
 
 std::vector<std::uint8_t> encode_pnm(ImageView<const std::uint8_t> image) {

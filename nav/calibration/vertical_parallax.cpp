@@ -41,6 +41,25 @@ bool VerticalParallaxMap::is_identity() const {
       coefficients.begin(), coefficients.end(), [](double c) { return c == 0.0; });
 }
 
+std::string calibration_map_problem(const VerticalParallaxMap& map) {
+  const auto side_ok = [](int side) {
+    return side >= kMinCalibrationSide && side <= imaging::kMaxImageSide;
+  };
+  if (!side_ok(map.width) || !side_ok(map.height))
+    return fmt::format("the map is for {}x{} images; a calibration needs {}..{} pixels a side",
+                       map.width, map.height, kMinCalibrationSide, imaging::kMaxImageSide);
+  for (const double c : map.coefficients)
+    if (!(std::fabs(c) <= kMaxCalibrationCoefficient))
+      return fmt::format("a coefficient of {} is beyond the +-{} a calibration may hold", c,
+                         kMaxCalibrationCoefficient);
+  const double largest = map.largest_shift();
+  if (!(largest <= kMaxVerticalShift))
+    return fmt::format("the map shifts rows by up to {:.1f}, more than the {} rows a calibration "
+                       "may correct",
+                       largest, kMaxVerticalShift);
+  return {};
+}
+
 void check_map_size(const VerticalParallaxMap& map, int width, int height,
                     const std::string& source) {
   if (map.width == width && map.height == height)

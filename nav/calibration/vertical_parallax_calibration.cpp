@@ -96,8 +96,8 @@ void check_images(imaging::ImageView<const std::uint8_t> left,
   if (left.width() != right.width() || left.height() != right.height())
     throw CalibrationError(fmt::format("the calibration pair differs in size: {}x{} and {}x{}",
                                        left.width(), left.height(), right.width(), right.height()));
-  const int rows_needed = o.block_height + 2 * o.max_shift + 1;
-  const int columns_needed = o.block_width + 3;
+  const int rows_needed = std::max(kMinCalibrationSide, o.block_height + 2 * o.max_shift + 1);
+  const int columns_needed = std::max(kMinCalibrationSide, o.block_width + 3);
   if (left.width() < columns_needed || left.height() < rows_needed)
     throw CalibrationError(fmt::format("{}x{} images are too small to calibrate: a block and its "
                                        "vertical search need {}x{} pixels",
@@ -156,6 +156,12 @@ CalibrationResult calibrate_vertical_parallax(imaging::ImageView<const std::uint
     if (pass + 1 < kPasses)
       aligned = remove_vertical_parallax(right, result.map);
   }
+  // A quadratic fitted to matches in one part of the image can run away beyond them.
+  const std::string problem = calibration_map_problem(result.map);
+  if (!problem.empty())
+    throw CalibrationError(fmt::format("the fitted map cannot be used: {} ({} blocks matched of "
+                                       "{}; they do not cover the image well enough)",
+                                       problem, result.samples.size(), result.blocks_searched));
   return result;
 }
 

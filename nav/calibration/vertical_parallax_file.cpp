@@ -18,13 +18,6 @@ namespace {
 constexpr std::string_view kTable = "vertical_parallax";
 constexpr std::array<std::string_view, 6> kCoefficientKeys = {"c0",  "cx",  "cy",
                                                               "cxx", "cxy", "cyy"};
-constexpr int kMinSide = 16;
-// Largest |coefficient| (rows, rows per pixel, rows per pixel squared). A quadratic within
-// kMaxVerticalShift rows over an image of at least 16 x 16 pixels has coefficients below about
-// 64 * 4, so this refuses no usable map; it keeps every term (at most 1e6 * 8192^2 rows over
-// the largest image) finite, so that no two terms can cancel to NaN.
-constexpr double kMaxCoefficient = 1e6;
-
 /// A table of a calibration file whose errors are CalibrationFileErrors naming its keys in full
 /// ('vertical_parallax.c0'); `name` is the table's, empty for the whole file.
 io::TomlTable calibration_table(const toml::table& table, const std::string& file,
@@ -39,17 +32,15 @@ VerticalParallaxMap read_map(io::TomlTable& table) {
   table.reject_unknown_keys("unknown key (known keys: width_px, height_px, c0, cx, cy, cxx, cxy, "
                             "cyy)");
   VerticalParallaxMap map;
-  map.width = table.integer_in("width_px", kMinSide, imaging::kMaxImageSide);
-  map.height = table.integer_in("height_px", kMinSide, imaging::kMaxImageSide);
+  map.width = table.integer_in("width_px", kMinCalibrationSide, imaging::kMaxImageSide);
+  map.height = table.integer_in("height_px", kMinCalibrationSide, imaging::kMaxImageSide);
   for (std::size_t i = 0; i < kCoefficientKeys.size(); ++i)
-    map.coefficients[i] = table.number_in(kCoefficientKeys[i], -kMaxCoefficient, kMaxCoefficient);
-  // Each coefficient is in range; the map as a whole must still keep rows corresponding.
-  const double largest = map.largest_shift();
-  if (!(largest <= kMaxVerticalShift))
-    throw CalibrationFileError(table.file(), table.line(), "",
-                               fmt::format("the map shifts rows by up to {:.1f}, more than the {} "
-                                           "rows a calibration may correct",
-                                           largest, kMaxVerticalShift));
+    map.coefficients[i] = table.number_in(kCoefficientKeys[i], -kMaxCalibrationCoefficient,
+                                          kMaxCalibrationCoefficient);
+  // Each key is in range; the map as a whole must still keep rows corresponding.
+  const std::string problem = calibration_map_problem(map);
+  if (!problem.empty())
+    throw CalibrationFileError(table.file(), table.line(), "", problem);
   return map;
 }
 

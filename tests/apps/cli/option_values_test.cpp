@@ -35,6 +35,16 @@ const std::vector<CommandOptions> kCommands = {
     {"commstime", {"--loops"}},
     {"linktest", {"--bytes", "--mbps", "--message-bytes"}},
     {"image convert I O --colour", {"--min", "--max"}},
+    {"emulate L R --platform onboard",
+     {"--seed", "--size", "--external-kb", "--occam-style", "--pitch", "--roll"}},
+    {"fault --platform onboard --inject hang:module0@1s", {"--seed", "--scrub"}},
+    {"campaign F", {"--runs", "--jobs", "--replay"}},
+    {"traverse",
+     {"--seed", "--rocks", "--slope", "--drive-m", "--hazard-memory", "--slip", "--goal-m",
+      "--size", "--max-cycles"}},
+    {"eval traverse",
+     {"--slope", "--drive-m", "--hazard-memory", "--slip", "--goal-m", "--size", "--jobs",
+      "--replay"}},
 };
 
 // Values no numeric option takes. 4294967312 is 2^32 + 16 (16 once wrapped to 32 bits) and is
@@ -110,6 +120,45 @@ TEST(OptionValues, ValuesJustOutsideTheRangeAreUsageErrors) {
   expect_usage_error("image convert I O --colour --min 3.5e38", "--min");
 }
 
+// The emulator's memory ends with the T805's address space, #80001000 + 2 GB - 4 KB.
+TEST(OptionValues, ExternalMemoryBeyondTheT805AddressSpaceIsAUsageErrorNamingTheOption) {
+  for (const char* kb : {"2097149", "4194300"}) {
+    const auto result = run_marsokhod(words({"emulate L R --platform onboard --external-kb", kb}));
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_NE(result.err.find("--external-kb: '" + std::string(kb) +
+                              "' is not a whole number between 0 and 2097148"),
+              std::string::npos)
+        << result.err;
+  }
+}
+
+// Lists of memory sizes: CLI11's own splitting once dropped an empty item without a word.
+TEST(OptionValues, AMemorySizeListWithAnEmptyOrBadItemIsAUsageErrorNamingTheOption) {
+  for (const char* command : {"emulate L R --platform onboard", "reproduce"})
+    for (const char* list :
+         {"64,,128", "64,", ",64", "''", "'64;128'", "1e3", "0", "2097149", "nan", "64,-1"})
+      expect_usage_error(words({command, "--sweep-external-kb", list}), "--sweep-external-kb");
+  const auto empty = run_marsokhod("reproduce --sweep-external-kb 64,,128");
+  EXPECT_NE(empty.err.find("'64,,128': item 2 is empty"), std::string::npos) << empty.err;
+}
+
+// Seed ranges say what is wrong with them: the range each end takes, the order, the count.
+TEST(OptionValues, ASeedRangeItCannotTakeIsRefusedSayingWhy) {
+  const std::string campaign =
+      "campaign " +
+      marsokhod::testing::quoted(fs::path(MARSOKHOD_SOURCE_DIR) / "campaigns" / "hang-power.toml");
+  for (const auto& [range, why] : std::vector<std::pair<std::string, std::string>>{
+           {"1..18446744073709551616", "each a whole number from 0 to 18446744073709551615"},
+           {"x..2", "each a whole number from 0 to 18446744073709551615"},
+           {"5..3", "the last seed is below the first"},
+           {"1..1001", "at most 1000 seeds"}}) {
+    const auto result = run_marsokhod(words({campaign, "--runs 1 --seeds", range}));
+    EXPECT_EQ(result.exit_code, 2) << range << "\n" << result.err;
+    EXPECT_NE(result.err.find("--seeds '" + range + "': "), std::string::npos) << result.err;
+    EXPECT_NE(result.err.find(why), std::string::npos) << range << "\n" << result.err;
+  }
+}
+
 // One rendered scene, reused by the edge-value runs below.
 class EdgeValues : public ::testing::Test {
 protected:
@@ -179,6 +228,17 @@ TEST_F(EdgeValues, CalibrateEvalStereoAndRigRunAtTheEndsOfTheirRanges) {
               " --max-disparity 127 --levels 0 --band 64 --right-gain 100 --right-offset -255");
   expect_runs("rig --size 128");
   expect_runs("rig --size 256 --json");
+}
+
+TEST_F(EdgeValues, CampaignAndEmulateRunAtTheEndsOfTheirRanges) {
+  // The largest seed a campaign file can hold, alone; once refused as not a whole number.
+  expect_runs(
+      "campaign " +
+      marsokhod::testing::quoted(fs::path(MARSOKHOD_SOURCE_DIR) / "campaigns" / "hang-power.toml") +
+      " --runs 1 --seeds 9223372036854775807..9223372036854775807 --out " + at("c"));
+  // The node's memory is mapped lazily: the largest legal size costs what the cycle touches.
+  expect_runs("emulate --platform onboard --external-kb 2097148 --out " + at("e"));
+  expect_runs("emulate --platform onboard --sweep-external-kb 2097148,1 --out " + at("s"));
 }
 
 TEST_F(EdgeValues, EvalTerrainEmulatorAndImageCommandsRunAtTheEndsOfTheirRanges) {

@@ -188,4 +188,27 @@ TEST(CampaignCommand, BadCampaignFilesNameFileLineAndKey) {
   }
 }
 
+// A platform found nowhere is the campaign file's error: both commands that read the file name
+// it, with its key, rather than a platform file that does not exist.
+TEST(CampaignCommand, APlatformFoundNowhereIsNamedAsTheCampaignFilesError) {
+  const fs::path dir = fresh_folder("campaign", "nowhere");
+  std::ifstream shipped(kCampaigns / "hang-power.toml");
+  std::ofstream file(dir / "nowhere.toml");
+  for (std::string line; std::getline(shipped, line);)
+    file << (line.rfind("platform = ", 0) == 0 ? "platform = \"-inf\"" : line) << "\n";
+  file.close();
+  const std::string campaign = quoted(dir / "nowhere.toml");
+  for (const std::string& command :
+       {"campaign " + campaign + " --runs 1 --out " + quoted(dir / "out"),
+        "traverse --platform onboard --max-cycles 1 --faults " + campaign + " --out " +
+            quoted(dir / "traverse")}) {
+    const auto result = run_marsokhod(command);
+    EXPECT_EQ(result.exit_code, 1) << command << "\n" << result.err;
+    EXPECT_NE(result.err.find((dir / "nowhere.toml").string() +
+                              ": 'platform': '-inf': no such platform file"),
+              std::string::npos)
+        << result.err;
+  }
+}
+
 } // namespace

@@ -9,12 +9,15 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace marsokhod::apps {
@@ -234,6 +237,45 @@ TEST_F(ImageCommand, InfoTextNamesEachField) {
                            "min:        1", "max:        3", "mean:       2", "non-finite: 0"})
     EXPECT_NE(result.out.find(line), std::string::npos) << "no \"" << line << "\" in\n"
                                                         << result.out;
+}
+
+// The largest memory `image info` took: run directly, so wait4 reports the command alone.
+long peak_kib_of_info(const fs::path& image, const fs::path& out) {
+  const pid_t child = fork();
+  if (child == 0) {
+    const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 1);
+    ::execl(MARSOKHOD_BINARY, MARSOKHOD_BINARY, "image", "info", "--json", image.c_str(),
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (child < 0 || ::wait4(child, &status, 0, &usage) != child || !WIFEXITED(status) ||
+      WEXITSTATUS(status) != 0)
+    return -1;
+  return usage.ru_maxrss;
+}
+
+// 16384 x 2048 16-bit RGB: 201 MB of pixels, which the image in memory doubled when info
+// read it whole. The last sample is 65535, so the figures need the last strip too.
+TEST_F(ImageCommand, InfoOnAVeryLargePpmTakesLittleMemory) {
+  const std::string header = "P6 16384 2048 65535\n";
+  const fs::path input = write("large.ppm", header);
+  const std::uint64_t pixels = std::uint64_t{16384} * 2048;
+  ASSERT_EQ(::truncate(input.c_str(), static_cast<off_t>(header.size() + pixels * 6 - 2)), 0);
+  std::ofstream(input, std::ios::binary | std::ios::app) << '\xff' << '\xff';
+  const long peak_kib = peak_kib_of_info(input, file("info.json"));
+  ASSERT_GT(peak_kib, 0) << "image info failed";
+  EXPECT_LT(peak_kib, 64 * 1024) << "KiB";
+  const Bytes out = read(file("info.json"));
+  const nlohmann::json info = nlohmann::json::parse(std::string(out.begin(), out.end()));
+  EXPECT_EQ(info["width"], 16384);
+  EXPECT_EQ(info["height"], 2048);
+  EXPECT_EQ(info["bit_depth"], 16);
+  EXPECT_EQ(info["min"], 0.0);
+  EXPECT_EQ(info["max"], 65535.0);
+  EXPECT_EQ(info["mean"], 65535.0 / static_cast<double>(pixels * 3));
 }
 
 TEST_F(ImageCommand, ConvertKeepsPixelsAcrossFormats) {

@@ -105,6 +105,16 @@ TEST(PfmMalformed, ScaleNotANumber) {
   expect_decode_error(pfm("Pf 1 1 -1e999\n", {kOne}, true), "big.pfm", {"scale '-1e999'"});
 }
 
+// The scale is one real number: a '+' may lead it, but not lead another sign.
+TEST(PfmMalformed, ScaleWithTwoSigns) {
+  expect_decode_error(pfm("Pf 1 1 +-1\n", {kOne}, true), "signs.pfm",
+                      {"scale '+-1' is not a finite decimal number"});
+  expect_decode_error(pfm("Pf 1 1 ++1\n", {kOne}, false), "signs.pfm", {"scale '++1'"});
+  expect_decode_error(pfm("Pf 1 1 -+1\n", {kOne}, true), "signs.pfm", {"scale '-+1'"});
+  const AnyImage plus = decode_image(pfm("Pf 1 1 +1\n", {kOne}, false), "plus.pfm");
+  EXPECT_EQ(floats(plus)(0, 0), 1.0F);
+}
+
 TEST(PfmMalformed, ScaleTooLong) {
   Bytes bytes = bytes_of("Pf 1 1 -" + std::string(100, '1') + "\n");
   expect_decode_error(bytes, "long.pfm", {"scale is longer than 64 characters"});

@@ -114,6 +114,20 @@ TEST_F(UpsetTest, BufferNamedByNoBlockIsAnErrorOfTheRun) {
   EXPECT_TRUE(run.abandoned);
 }
 
+// Address 7 lies below the on-chip RAM at #80000000, #90000000 above the 256 KB of external
+// RAM that ends at #80040FFF: both are outside the module's memory.
+TEST_F(UpsetTest, AnAddressOutsideTheModulesMemoryIsAnErrorOfTheRun) {
+  for (const emulator::Address address : {emulator::Address{7}, emulator::Address{0x90000000U}}) {
+    FailoverSupervisor* supervisor = nullptr;
+    const CycleEmulation run = emulate({upset_at("module0", 100 * kMs, address, 0)}, supervisor);
+    ASSERT_TRUE(supervisor->error()) << address;
+    EXPECT_NE(supervisor->error()->find("is outside its memory (#80000000..#80040FFF)"),
+              std::string::npos)
+        << *supervisor->error();
+    EXPECT_TRUE(run.abandoned);
+  }
+}
+
 TEST_F(UpsetTest, EdacCorrectsAnUpsetInExternalMemoryAndTheRunIsUnchanged) {
   Protection edac;
   edac.edac = true;

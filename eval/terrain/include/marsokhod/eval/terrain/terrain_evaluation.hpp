@@ -23,8 +23,8 @@ struct SeedRange {
 };
 
 /// Reads "A..B" or a single seed "A"; throws OptionError quoting the text when it is malformed,
-/// runs backwards or spans more than 10000 seeds.
-SeedRange parse_seed_range(const std::string& text);
+/// runs backwards or spans more than `max_seeds` seeds.
+SeedRange parse_seed_range(const std::string& text, std::uint64_t max_seeds = 10000);
 
 /// How each site is built and navigated.
 struct TerrainEvaluationOptions {

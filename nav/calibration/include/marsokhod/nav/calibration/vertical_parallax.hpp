@@ -70,6 +70,17 @@ imaging::Image<std::uint8_t> remove_vertical_parallax(
 
 /// Largest |shift| a calibration file may hold, rows: beyond it rows no longer correspond.
 inline constexpr double kMaxVerticalShift = 64.0;
+/// Smallest width or height of the images a calibration file describes, pixels.
+inline constexpr int kMinCalibrationSide = 16;
+/// Largest |coefficient| a calibration file may hold. A quadratic within kMaxVerticalShift rows
+/// over an image of at least 16 x 16 pixels has coefficients below about 64 * 4, so this refuses
+/// no usable map; it keeps every term (at most 1e6 * 8192^2 rows over the largest image) finite,
+/// so that no two terms can cancel to NaN.
+inline constexpr double kMaxCalibrationCoefficient = 1e6;
+
+/// Why a calibration file cannot hold `map`, empty when it can: the rules load_vertical_parallax
+/// applies, so that what a calibration writes the navigation reads.
+std::string calibration_map_problem(const VerticalParallaxMap& map);
 
 /// Reads a calibration file (TOML, docs/navigation.md, "Calibration file"). Throws
 /// io::InputError for a file that cannot be read or a TOML syntax error, and
