@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,9 +23,28 @@ namespace {
 
 struct TerrainCli {
   std::string seeds;
+  std::string target = "10..12";
   eval::TerrainEvaluationOptions evaluation;
   bool json = false;
 };
+
+// Nearest and farthest destination the planner takes, "A..B" in metres.
+constexpr double kNearestTarget = 1.0;
+constexpr double kFarthestTarget = 20.0; // the zones judge no point beyond 20 m
+
+void read_target_band(const std::string& text, eval::TerrainEvaluationOptions& evaluation) {
+  const std::size_t dots = text.find("..");
+  const std::optional<double> near =
+      dots == std::string::npos ? std::nullopt : io::parse_finite(text.substr(0, dots));
+  const std::optional<double> far =
+      dots == std::string::npos ? std::nullopt : io::parse_finite(text.substr(dots + 2));
+  if (!near || !far || *near < kNearestTarget || *far > kFarthestTarget || *far < *near)
+    throw UsageError(fmt::format("--target '{}': write A..B in metres, {} <= A <= B <= {} (the "
+                                 "paper's band is 10..12)",
+                                 text, kNearestTarget, kFarthestTarget));
+  evaluation.target_min_m = *near;
+  evaluation.target_max_m = *far;
+}
 
 nlohmann::ordered_json number_or_null(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
@@ -38,6 +58,9 @@ void print_json(const eval::TerrainEvaluationOptions& options, const eval::Terra
   json["light"] = options.light;
   json["rocks"] = options.rocks;
   json["stereo"] = options.oracle ? "ground truth" : "matched";
+  json["target_m"] = {options.target_min_m, options.target_max_m};
+  json["step_baseline_m"] = options.step_baseline_m;
+  json["unseen_cell_m"] = options.unseen_cell_m;
   json["obstacle_recall"] = number_or_null(f.obstacle_recall);
   json["false_prohibited"] = number_or_null(f.false_prohibited);
   nlohmann::ordered_json causes;
@@ -94,6 +117,12 @@ void print_table(const eval::TerrainEvaluationOptions& options, const eval::Terr
   fmt::print("{} seeds, {}x{} px, light {}, rocks {:.0f} %, {} disparity\n", f.seeds, options.size,
              options.size, options.light, 100.0 * options.rocks,
              options.oracle ? "ground-truth" : "matched");
+  fmt::print(
+      "paths to {:g}..{:g} m, step window {:g} m, {}\n", options.target_min_m, options.target_max_m,
+      options.step_baseline_m,
+      options.unseen_cell_m > 0.0
+          ? fmt::format("footprint kept on ground seen in {:g} m cells", options.unseen_cell_m)
+          : std::string("footprint may cross unseen ground"));
   fmt::print("{:<8} {:>12} {:>10} {:>12} {:>13}\n", "band m", "obstacle px", "recall %", "free px",
              "false proh. %");
   for (const eval::BandFigures& b : f.bands)
@@ -159,6 +188,18 @@ Command add_terrain_evaluation(CLI::App& parent) {
                   "Side of each square site, metres")
       ->check(real_between(16.0, 200.0))
       ->capture_default_str();
+  app->add_option("--unseen-cell", cli->evaluation.unseen_cell_m,
+                  "Keep the footprint on ground the pair saw, judged on a grid of this cell, "
+                  "metres (0: the footprint may cross unseen ground)")
+      ->check(real_between(0.0, 2.0))
+      ->capture_default_str();
+  app->add_option("--step-baseline", cli->evaluation.step_baseline_m,
+                  "The zones' step window, metres (the world judges steps over 0.30)")
+      ->check(real_between(0.05, 1.0))
+      ->capture_default_str();
+  app->add_option("--target", cli->target,
+                  "Band the path's destination lies in, A..B metres (the paper's 10..12)")
+      ->capture_default_str();
   app->add_flag("--oracle", cli->evaluation.oracle,
                 "Navigate on the ground-truth disparity instead of matching (scores the hazard "
                 "rules alone)");
@@ -168,6 +209,7 @@ Command add_terrain_evaluation(CLI::App& parent) {
   app->add_flag("--json", cli->json, "Print one JSON object instead of a table");
   return {app, [cli] {
             const eval::SeedRange range = seed_range_option(cli->seeds);
+            read_target_band(cli->target, cli->evaluation);
             const std::vector<eval::SeedOutcome> outcomes = eval::evaluate_seeds(
                 range, cli->evaluation,
                 [](std::uint64_t position, std::uint64_t count, std::uint64_t seed) {

@@ -117,6 +117,10 @@ SeedOutcome evaluate_seed(std::uint64_t seed, const TerrainEvaluationOptions& cl
 
   nav::NavigationOptions options;
   options.attitude = placement.attitude;
+  options.footprint.unseen_cell_m = cli.unseen_cell_m;
+  options.zones.step_baseline_m = cli.step_baseline_m;
+  options.planner.target_min_m = cli.target_min_m;
+  options.planner.target_max_m = cli.target_max_m;
   const auto start = std::chrono::steady_clock::now();
   const nav::NavigationResult result =
       cli.oracle ? nav::navigate_disparity(frame.truth.disparity, frame.truth.valid, rig, options)

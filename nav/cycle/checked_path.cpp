@@ -4,6 +4,7 @@
 #include "work/work_report.hpp"
 
 #include "marsokhod/nav/path/footprint_check.hpp"
+#include "marsokhod/nav/path/seen_ground.hpp"
 
 #include <fmt/format.h>
 
@@ -77,9 +78,10 @@ void restore(ZoneMap& zones, Meter& meter) {
 
 std::string refusal(const FootprintConflict& first, int paths) {
   return fmt::format(
-      "the rover's footprint meets a step or slope {:.2f} m ahead, {:.2f} m {} "
+      "the rover's footprint meets {} {:.2f} m ahead, {:.2f} m {} "
       "({}), on each of the {} path{} tried",
-      first.hazard.x, std::abs(first.hazard.y), first.hazard.y >= 0.0 ? "left" : "right",
+      first.unseen ? "ground the pair did not see" : "a step or slope", first.hazard.x,
+      std::abs(first.hazard.y), first.hazard.y >= 0.0 ? "left" : "right",
       first.turning ? "turning on the spot" : "driving", paths, paths == 1 ? "" : "s");
 }
 
@@ -91,6 +93,9 @@ PathPlan checked_plan(const TerrainRows& terrain, ZoneMap& zones, const PlannerO
   std::optional<FootprintConflict> first;
   imaging::Chassis checked = options.chassis;
   checked.wheel_diameter_m += 2.0 * options.allowance_m;
+  std::optional<SeenGround> seen;
+  if (options.unseen_cell_m > 0.0)
+    seen.emplace(terrain, options.unseen_cell_m, meter, memory);
   for (int attempt = 0; attempt < options.paths; ++attempt) {
     PathPlan plan = plan_path(terrain, zones, planner, meter, memory);
     if (!plan.found && !first)
@@ -105,6 +110,12 @@ PathPlan checked_plan(const TerrainRows& terrain, ZoneMap& zones, const PlannerO
           footprint_covers(options.remembered, commands.commands, checked,
                            options.conflicts_per_path - conflicts.size(), meter, memory);
       conflicts.insert(conflicts.end(), remembered.begin(), remembered.end());
+    }
+    if (seen && conflicts.size() < options.conflicts_per_path) {
+      const std::pmr::vector<FootprintConflict> unseen =
+          footprint_unseen(*seen, commands.commands, options.chassis,
+                           options.conflicts_per_path - conflicts.size(), meter, memory);
+      conflicts.insert(conflicts.end(), unseen.begin(), unseen.end());
     }
     if (conflicts.empty()) {
       if (first)
@@ -129,6 +140,10 @@ void validate(const FootprintCheckOptions& options) {
   if (!(options.allowance_m >= 0.0) || !std::isfinite(options.allowance_m))
     throw std::invalid_argument(fmt::format(
         "footprint check: allowance_m = {} must be finite and not negative", options.allowance_m));
+  if (!(options.unseen_cell_m >= 0.0) || !std::isfinite(options.unseen_cell_m))
+    throw std::invalid_argument(
+        fmt::format("footprint check: unseen_cell_m = {} must be finite and not negative",
+                    options.unseen_cell_m));
   if (options.conflicts_per_path < 1)
     throw std::invalid_argument("footprint check: conflicts_per_path must be at least 1");
 }

@@ -101,6 +101,8 @@ const std::vector<OptionCase> kCases = {
     {"marsokhod eval stereo --fill", Takes::choice,
      "eval stereo {P} --max-disparity 16 --out {D} --fill {}"},
     {"marsokhod eval terrain --seeds", Takes::text, "eval terrain --size 32 --seeds {}"},
+    {"marsokhod eval terrain --target", Takes::text,
+     "eval terrain --seeds 1 --size 32 --target {}"},
     {"marsokhod eval terrain --light", Takes::choice,
      "eval terrain --seeds 1 --size 32 --light {}"},
     {"marsokhod eval terrain --pictures", Takes::output_folder,

@@ -5,10 +5,12 @@
 
 #include "marsokhod/nav/cycle/checked_path.hpp"
 #include "marsokhod/nav/path/footprint_check.hpp"
+#include "marsokhod/nav/path/seen_ground.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace marsokhod::nav {
@@ -98,6 +100,64 @@ TEST(PlanCyclePath, RefusesEveryPathWhoseDriveCrossesARememberedStep) {
   EXPECT_EQ(plan.pixels, unchecked.pixels);
 }
 
+// Flat ground whose pixels more than 0.05 m left of the centre line, from 6.0 to 7.0 m ahead,
+// are seen 1.0 m farther, as if nearer ground hid that patch from the cameras: every pixel is
+// known and traversable, and no point lies in the patch, which only the seen-ground check can
+// tell.
+TerrainPoints terrain_with_hidden_patch(const GridSpec& grid) {
+  TerrainPoints terrain = grid_terrain(grid, [](double, double) { return 0.0; });
+  for (int y = 0; y < grid.height; ++y) {
+    const double forward = grid_forward(grid, y);
+    if (forward < 6.0 - 1e-6 || forward >= 7.0 - 1e-6)
+      continue;
+    for (int x = 0; x < grid.width; ++x)
+      if (grid_left(grid, x) > 0.05 + 1e-6)
+        terrain.forward(x, y) = static_cast<float>(forward + 1.0);
+  }
+  return terrain;
+}
+
+std::pmr::vector<FootprintConflict> unseen_under(const TerrainPoints& terrain,
+                                                 const PathPlan& plan) {
+  const DrivePlan drive = plan_drive(terrain, plan.pixels, DriveOptions{});
+  const SeenGround seen(ResidentTerrain(terrain), 0.25);
+  return footprint_unseen(seen, drive.commands, imaging::Chassis{}, 4);
+}
+
+// Unchecked, the path runs straight ahead and the footprint's left half (0 to 0.60 m) crosses
+// the patch, whose cells 6.25 to 6.75 m ahead and 0.30 m and more to the left have no seen
+// neighbour. Checked, on ground 2.0 m either side, the path keeps the footprint off it.
+TEST(PlanCyclePath, KeepsTheFootprintOffGroundThePairDidNotSee) {
+  CheckScene scene;
+  scene.grid = GridSpec{81, 208, 0.05, 2.0};
+  scene.terrain = terrain_with_hidden_patch(scene.grid);
+  scene.zones = ZoneMap{imaging::Image<std::uint8_t>(81, 208, 1, 0), {}};
+  const PathPlan unchecked = plan_path(scene.terrain, scene.zones, PlannerOptions{});
+  ASSERT_TRUE(unchecked.found) << unchecked.reason;
+  EXPECT_FALSE(unseen_under(scene.terrain, unchecked).empty());
+  FootprintCheckOptions seeing;
+  seeing.unseen_cell_m = 0.25;
+  const PathPlan plan =
+      plan_cycle_path(scene.terrain, scene.zones, PlannerOptions{}, DriveOptions{}, seeing);
+  ASSERT_TRUE(plan.found) << plan.reason;
+  EXPECT_TRUE(unseen_under(scene.terrain, plan).empty());
+  EXPECT_NE(plan.pixels, unchecked.pixels);
+}
+
+// On the long grid, 1.0 m either side, the footprint (1.20 m wide) cannot pass the patch
+// without leaving the view on the right: no path, saying why.
+TEST(PlanCyclePath, SaysNoPathWhenEveryPathCrossesGroundThePairDidNotSee) {
+  CheckScene scene;
+  scene.terrain = terrain_with_hidden_patch(scene.grid);
+  FootprintCheckOptions seeing;
+  seeing.unseen_cell_m = 0.25;
+  const PathPlan plan =
+      plan_cycle_path(scene.terrain, scene.zones, PlannerOptions{}, DriveOptions{}, seeing);
+  EXPECT_FALSE(plan.found);
+  EXPECT_NE(plan.reason.find("footprint meets ground the pair did not see"), std::string::npos)
+      << plan.reason;
+}
+
 TEST(PlanCyclePath, WithoutTheCheckIsThePlannersPath) {
   CheckScene scene;
   scene.step_at(20, 207 - 176);
@@ -119,6 +179,9 @@ TEST(PlanCyclePath, RefusesBadCheckOptions) {
   allowance.allowance_m = -0.1;
   EXPECT_THROW(plan_cycle_path(scene.terrain, scene.zones, {}, {}, allowance),
                std::invalid_argument);
+  FootprintCheckOptions cell;
+  cell.unseen_cell_m = -0.25;
+  EXPECT_THROW(plan_cycle_path(scene.terrain, scene.zones, {}, {}, cell), std::invalid_argument);
 }
 
 } // namespace

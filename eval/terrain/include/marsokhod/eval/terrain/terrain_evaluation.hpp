@@ -5,6 +5,9 @@
 #include "marsokhod/eval/terrain/terrain_scoring.hpp"
 #include "marsokhod/imaging/rig/camera.hpp"
 #include "marsokhod/imaging/rig/chassis.hpp"
+#include "marsokhod/nav/cycle/checked_path.hpp"
+#include "marsokhod/nav/path/path_planner.hpp"
+#include "marsokhod/nav/zones/zones.hpp"
 #include "marsokhod/world/terrain/terrain.hpp"
 
 #include <array>
@@ -34,6 +37,13 @@ struct TerrainEvaluationOptions {
   double terrain_size = world::TerrainSettings{}.size_m;
   bool oracle = false;  ///< navigate on the ground-truth disparity instead of matching
   std::string pictures; ///< folder for one comparison picture per seed, empty for none
+  /// The footprint check's grid of seen ground, m (FootprintCheckOptions::unseen_cell_m).
+  double unseen_cell_m = nav::FootprintCheckOptions{}.unseen_cell_m;
+  /// The zones' step window, m (ZoneOptions::step_baseline_m).
+  double step_baseline_m = nav::ZoneOptions{}.step_baseline_m;
+  /// The band the path's destination lies in, m (the paper's 10-12 m by default).
+  double target_min_m = nav::PlannerOptions{}.target_min_m;
+  double target_max_m = nav::PlannerOptions{}.target_max_m;
 };
 
 /// Elevation errors per range band, metres.

@@ -36,6 +36,9 @@ struct FootprintCheckOptions {
   /// the drive begins on ground just below the cameras' view, which this cycle cannot see.
   /// Checked like the zones' own, after them; the points must outlive the cycle.
   std::span<const GroundPoint> remembered;
+  /// Cell of the grid of seen ground (nav::SeenGround), m; the footprint must then stay on
+  /// ground the pair saw, beyond the nearest ground it shows. 0 lets it cross unseen ground.
+  double unseen_cell_m = 0.0;
 };
 
 /// Throws std::invalid_argument naming the first option out of range.

@@ -19,6 +19,7 @@ struct FootprintConflict {
   GroundPoint hazard; ///< the point's ground position, level frame
   int command = 0;    ///< the command during which the footprint covers it
   bool turning = false;
+  bool unseen = false; ///< ground the pair did not see (seen_ground.hpp), not a step or slope
 };
 
 /// How finely turns on the spot are sampled (driving straight is tested exactly: the
