@@ -6,7 +6,30 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+#include <string>
+#include <utility>
+
 namespace marsokhod::apps {
+
+namespace {
+
+// Normal paths end beyond the escapes' 3-4 m and within the zones' 20 m.
+constexpr double kShortestNormalPath = 4.0;
+constexpr double kLongestNormalPath = 20.0;
+
+std::optional<std::pair<double, double>> normal_path_band(const std::string& text) {
+  const std::size_t dots = text.find("..");
+  if (dots == std::string::npos)
+    return std::nullopt;
+  const std::optional<double> near = io::parse_finite(text.substr(0, dots));
+  const std::optional<double> far = io::parse_finite(text.substr(dots + 2));
+  if (!near || !far || *near < kShortestNormalPath || *far > kLongestNormalPath || *far < *near)
+    return std::nullopt;
+  return std::pair{*near, *far};
+}
+
+} // namespace
 
 void add_course_options(CLI::App* app, eval::TraverseSettings& course) {
   app->add_option("--slope", course.slope_deg, "Regional slope of the site, degrees")
@@ -31,6 +54,32 @@ void add_course_options(CLI::App* app, eval::TraverseSettings& course) {
                   "its cameras' view that its next drives begin on; 0 keeps nothing between "
                   "cycles, as the paper's navigation")
       ->transform(integer_between(0, 10))
+      ->capture_default_str();
+  app->add_option_function<std::string>(
+         "--normal-path",
+         [&course](const std::string& text) {
+           const auto band = normal_path_band(text);
+           course.motion.normal_min_m = band->first;
+           course.motion.normal_max_m = band->second;
+         },
+         "Band of the motion scheme's normal paths, A..B m (the paper's 10..12; escapes are 3..4)")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            return normal_path_band(text)
+                       ? std::string()
+                       : fmt::format("'{}': write A..B in metres, {} <= A <= "
+                                     "B <= {}",
+                                     text, kShortestNormalPath, kLongestNormalPath);
+          },
+          "A..B"));
+  app->add_option("--step-baseline", course.step_baseline_m,
+                  "The zones' step window, m (the world judges steps over 0.30)")
+      ->check(real_between(0.05, 1.0))
+      ->capture_default_str();
+  app->add_option("--unseen-cell", course.unseen_cell_m,
+                  "Keep each drive's footprint on ground the pair saw, judged on a grid of this "
+                  "cell, m (0: the footprint may cross unseen ground)")
+      ->check(real_between(0.0, 2.0))
       ->capture_default_str();
   app->add_option("--slip", course.slip,
                   "Mean wheel slip, 0..0.5: the ground gives each drive (1 - s) of what the "

@@ -131,7 +131,7 @@ public:
   }
 
   TraverseResult run(const TraverseProgress& progress) {
-    nav::MotionAction action = nav::initial_motion_action();
+    nav::MotionAction action = nav::initial_motion_action(s_.motion);
     const int limit = cycle_limit(s_);
     while (static_cast<int>(result_.cycles.size()) < limit) {
       if (goal_left() <= s_.goal_tolerance_m)
@@ -213,6 +213,8 @@ private:
         course_.renderer.render(course_.rig, placement, course_.surface, render);
     nav::NavigationOptions options;
     options.attitude = placement.attitude;
+    options.zones.step_baseline_m = s_.step_baseline_m;
+    options.footprint.unseen_cell_m = s_.unseen_cell_m;
     const world::RoverPose& believed = odometry_.estimate();
     const imaging::PlanarPose at{believed.x, believed.y, believed.heading_deg / kDegreesPerRadian};
     if (s_.hazard_memory_cycles > 0) {
@@ -296,7 +298,7 @@ private:
   }
 
   nav::MotionStep step(const nav::MotionEvent& event) {
-    const nav::MotionStep next = nav::next_motion_step(status_, event);
+    const nav::MotionStep next = nav::next_motion_step(status_, event, s_.motion);
     status_ = next.status;
     return next;
   }

@@ -39,6 +39,26 @@ TEST(Traverse, RockFreeCourseReachesTheGoal) {
   EXPECT_GE(r.cycles.size(), 2u); // a normal path is at most 12 m
 }
 
+// Normal paths of 4-6 m: each normal cycle's destination lies 4 to 6 m from where the rover
+// stood (the goal, 20 m away, is nearer than 6 m only in the last cycle), so a 20 m course
+// takes at least four cycles where 10-12 m paths take two.
+TEST(Traverse, TheNormalPathBandSetsHowFarEachCyclePlans) {
+  TraverseSettings s = short_bare_course();
+  s.motion.normal_min_m = 4.0;
+  s.motion.normal_max_m = 6.0;
+  const TraverseResult r = run_traverse(s);
+  ASSERT_EQ(r.outcome, TraverseOutcome::success) << traverse_json(r).dump(2);
+  EXPECT_GE(r.cycles.size(), 4u);
+  for (std::size_t i = 0; i + 1 < r.cycles.size(); ++i) {
+    const TraverseCycle& c = r.cycles[i];
+    if (c.state != nav::MotionState::normal_planning || !c.found)
+      continue;
+    const double reach = (c.planned.back() - c.planned.front()).norm();
+    EXPECT_GE(reach, 4.0 - 0.3) << "cycle " << i; // the path's destination pixel, 5 cm cells
+    EXPECT_LE(reach, 6.0 + 0.3) << "cycle " << i;
+  }
+}
+
 TEST(Traverse, SameSettingsGiveTheSameTraverse) {
   TraverseSettings s = short_bare_course();
   s.rocks = 0.10;

@@ -40,6 +40,13 @@ struct TraverseSettings {
   /// its next drives begin on, below the cameras' view; 0 keeps nothing between cycles, as the
   /// paper's navigation (docs/traverse.md: remembering did not make courses safer).
   int hazard_memory_cycles = 0;
+  /// The motion scheme's normal paths (the paper's 10-12 m) and its escapes.
+  nav::MotionConfig motion;
+  /// The zones' step window, m (nav::ZoneOptions::step_baseline_m).
+  double step_baseline_m = nav::ZoneOptions{}.step_baseline_m;
+  /// The footprint check's grid of seen ground, m (nav::FootprintCheckOptions::unseen_cell_m);
+  /// 0 lets the footprint cross unseen ground.
+  double unseen_cell_m = 0.0;
   /// Mean wheel slip, 0..0.5: the rover steers by dead-reckoned odometry (eval::Odometry) whose
   /// error grows with it; 0 is exact odometry.
   double slip = 0.0;
