@@ -32,6 +32,9 @@ echo
 echo
 "$marsokhod" traverse --seed 1 --rocks 0 --out "$traverse_dir"
 echo
+"$marsokhod" report "$world_dir" "$nav_dir" "$emulate_dir" "$onboard_dir" "$reproduce_dir" \
+  "$campaign_dir" "$traverse_dir" --title "marsokhod: make run" --out "$out/report.html"
+echo
 echo "make run: results are in $world_dir, $nav_dir, $emulate_dir, $onboard_dir, $reproduce_dir"
 echo "$campaign_dir and $traverse_dir"
 echo "  $world_dir:"
@@ -61,3 +64,5 @@ echo "    runs.jsonl                        one record per run; campaign --repla
 echo "  $traverse_dir:"
 echo "    map.png                           an 80 m course driven cycle after cycle, from above"
 echo "    traverse.json, cycles.jsonl       the outcome, distances, stops, and each cycle"
+echo
+echo "All of it in one page: $out/report.html (open it in a browser; everything is inside it)"

@@ -29,6 +29,7 @@ using marsokhod::testing::run_marsokhod;
 /// What an option takes, and so which wrong value it is given.
 enum class Takes {
   input_file,    ///< given a folder: exit 1 naming it
+  input_folder,  ///< given a regular file: exit 1 naming it
   output_folder, ///< given a regular file: exit 1 naming it
   output_file,   ///< given a folder: exit 1 naming it
   choice,        ///< given a word not offered: exit 2 naming the option
@@ -151,6 +152,9 @@ const std::vector<OptionCase> kCases = {
     {"marsokhod traverse --normal-path", Takes::text, "traverse --max-cycles 1 --normal-path {}"},
     {"marsokhod eval traverse --normal-path", Takes::text,
      "eval traverse --seeds 1 --normal-path {}"},
+    {"marsokhod report DIR", Takes::input_folder, "report {} --out {D}.html"},
+    {"marsokhod report --out", Takes::output_file, "report {W} --out {}"},
+    {"marsokhod report --title", Takes::label, ""},
     {"marsokhod traverse --light", Takes::choice, "traverse --max-cycles 1 --light {}"},
     {"marsokhod traverse --platform", Takes::choice, "traverse --max-cycles 1 --platform {}"},
     {"marsokhod traverse --faults", Takes::input_file,
@@ -195,6 +199,7 @@ protected:
         {"{}", value},
         {"{L}", quoted(dir_ / "w" / "left.pgm")},
         {"{R}", quoted(dir_ / "w" / "right.pgm")},
+        {"{W}", quoted(dir_ / "w")},
         {"{P}", quoted(dir_ / "PAIRS.tsv")},
         {"{C}", quoted(fs::path(MARSOKHOD_SOURCE_DIR) / "campaigns" / "hang-power.toml")},
         {"{D}", quoted(dir_ / fmt::format("out-{}", number))}};
@@ -222,7 +227,9 @@ TEST_F(WrongValues, EachIsExitOneNamingThePathOrExitTwoNamingTheOption) {
     if (c.takes == Takes::label)
       continue;
     const bool path = c.takes != Takes::choice && c.takes != Takes::text;
-    const fs::path wrong = dir_ / (c.takes == Takes::output_folder ? "file" : "folder");
+    const fs::path wrong =
+        dir_ /
+        (c.takes == Takes::output_folder || c.takes == Takes::input_folder ? "file" : "folder");
     const std::string value = path ? quoted(wrong) : (c.takes == Takes::choice ? "bogus" : "x..");
     const std::string arguments = line(c, value, number);
     const auto result = run_marsokhod(arguments);

@@ -1,0 +1,101 @@
+// Tests: `marsokhod report` on the folders the commands write: recognised by their JSON, one
+// self-contained page, unknown folders refused; and the paper check's precision rule.
+
+#include "report/report_sections.hpp"
+#include "support/run_marsokhod.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace marsokhod::apps {
+namespace {
+
+namespace fs = std::filesystem;
+using marsokhod::testing::fresh_folder;
+using marsokhod::testing::quoted;
+using marsokhod::testing::run_marsokhod;
+using marsokhod::testing::slurp;
+
+// The paper writes "8 sec", "10 sec" and "1.3 min": half a unit of the last digit either side.
+TEST(PaperCheck, AFigureMatchesWithinHalfAUnitOfThePapersLastDigit) {
+  const auto eight = check_against_paper("the stereo reconstruction algorithm takes 8 sec", 8.4);
+  ASSERT_TRUE(eight);
+  EXPECT_DOUBLE_EQ(eight->low_s, 7.5);
+  EXPECT_DOUBLE_EQ(eight->high_s, 8.5);
+  EXPECT_TRUE(eight->pass);
+  EXPECT_FALSE(check_against_paper("takes 8 sec", 8.6)->pass);
+  const auto minutes = check_against_paper("versus 1.3 min in onboard processing", 23.3);
+  ASSERT_TRUE(minutes);
+  EXPECT_DOUBLE_EQ(minutes->low_s, 75.0);
+  EXPECT_DOUBLE_EQ(minutes->high_s, 81.0);
+  EXPECT_FALSE(minutes->pass);
+  EXPECT_TRUE(check_against_paper("equals 10 sec", 10.4)->pass);
+  EXPECT_FALSE(check_against_paper("no figure here", 1.0));
+}
+
+class ReportCommand : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() {
+    dir_ = fresh_folder("report", "runs");
+    const auto world = run_marsokhod("world --size 64 --out " + quoted(dir_ / "world"));
+    ASSERT_EQ(world.exit_code, 0) << world.err;
+    const auto nav =
+        run_marsokhod("nav " + quoted(dir_ / "world" / "left.pgm") + " " +
+                      quoted(dir_ / "world" / "right.pgm") + " --out " + quoted(dir_ / "nav"));
+    ASSERT_EQ(nav.exit_code, 0) << nav.err;
+    const auto traverse =
+        run_marsokhod("traverse --rocks 0 --goal-m 8 --size 64 --out " + quoted(dir_ / "traverse"));
+    ASSERT_EQ(traverse.exit_code, 0) << traverse.err;
+  }
+  static fs::path dir_;
+};
+
+fs::path ReportCommand::dir_;
+
+TEST_F(ReportCommand, OnePageHoldsEveryFolderWithItsPicturesAndFetchesNothing) {
+  const fs::path page = dir_ / "report.html";
+  const auto result =
+      run_marsokhod("report " + quoted(dir_ / "world") + " " + quoted(dir_ / "nav") + " " +
+                    quoted(dir_ / "traverse") + " --title 'A <test> run' --out " + quoted(page));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string html = slurp(page);
+  EXPECT_NE(html.find("<title>A &lt;test&gt; run</title>"), std::string::npos);
+  for (const char* section : {"<h2>world: ", "<h2>navigation cycle: ", "<h2>traverse: "})
+    EXPECT_NE(html.find(section), std::string::npos) << section;
+  // Every PNG of the folders is inside the page; nothing is fetched from anywhere.
+  std::size_t pngs = 0;
+  for (const char* folder : {"world", "nav", "traverse"})
+    for (const auto& entry : fs::directory_iterator(dir_ / folder))
+      pngs += entry.path().extension() == ".png" ? 1 : 0;
+  std::size_t embedded = 0;
+  for (std::size_t at = html.find("data:image/png;base64,"); at != std::string::npos;
+       at = html.find("data:image/png;base64,", at + 1))
+    ++embedded;
+  EXPECT_EQ(embedded, pngs);
+  EXPECT_EQ(html.find("http:"), std::string::npos);
+  EXPECT_EQ(html.find("https:"), std::string::npos);
+  EXPECT_EQ(html.find(" src=\"/"), std::string::npos);
+}
+
+TEST_F(ReportCommand, AFolderNoCommandWroteIsRefusedNamingIt) {
+  const fs::path empty = dir_ / "empty";
+  fs::create_directories(empty);
+  const auto result = run_marsokhod("report " + quoted(dir_ / "nav") + " " + quoted(empty) +
+                                    " --out " + quoted(dir_ / "x.html"));
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find(empty.string() + ": not an output folder report knows"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(dir_ / "x.html"));
+  std::ofstream(empty / "path.json") << "{ not json";
+  const auto broken =
+      run_marsokhod("report " + quoted(empty) + " --out " + quoted(dir_ / "y.html"));
+  EXPECT_EQ(broken.exit_code, 1);
+  EXPECT_NE(broken.err.find("path.json"), std::string::npos) << broken.err;
+}
+
+} // namespace
+} // namespace marsokhod::apps
