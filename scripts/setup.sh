@@ -4,7 +4,8 @@
 set -eu
 
 packages="g++ cmake ninja-build pkgconf libboost-context-dev libeigen3-dev libfmt-dev libgtest-dev
-libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libpng-dev clang-format"
+libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libpng-dev clang-format
+libjs-chart.js"
 
 missing=""
 for package in $packages; do

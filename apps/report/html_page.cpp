@@ -31,6 +31,7 @@ th { background: #eee; }
 figure { display: inline-block; margin: 0.5em; vertical-align: top; }
 figure img { max-width: 36em; border: 1px solid #ccc; }
 figcaption { font-size: 0.85em; color: #555; }
+.chart { max-width: 50em; margin: 1em 0; }
 .pass { color: #060; font-weight: bold; }
 .fail { color: #a00; font-weight: bold; }
 )";
@@ -88,6 +89,29 @@ std::string html_table(const std::vector<std::string>& header,
     html += "</tr>\n";
   }
   return html + "</table>\n";
+}
+
+std::string inline_chart_library() {
+  std::ifstream in(kChartJsFile, std::ios::binary);
+  if (!in)
+    throw CommandError(fmt::format("{}: cannot read Chart.js (Debian package libjs-chart.js; "
+                                   "make run and make test install it)",
+                                   kChartJsFile));
+  const std::string code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (code.find("</script") != std::string::npos)
+    throw CommandError(
+        fmt::format("{}: holds '</script', which would end the page's script", kChartJsFile));
+  return "<script>\n" + code + "\n</script>\n";
+}
+
+std::string chart_canvas(std::string_view id, const nlohmann::json& config) {
+  std::string data = config.dump();
+  // "</" would end the script element early, whatever the JSON string held.
+  for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 2))
+    data.replace(at, 2, "<\\/");
+  return fmt::format("<div class=\"chart\"><canvas id=\"{0}\"></canvas></div>\n<script>new "
+                     "Chart(document.getElementById(\"{0}\"), {1});</script>\n",
+                     html_escape(id), data);
 }
 
 std::string html_document(std::string_view title, std::string_view body) {

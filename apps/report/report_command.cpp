@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -29,7 +30,7 @@ struct ReportCli {
 int run_report(const ReportCli& cli) {
   std::vector<ReportSection> sections;
   for (const fs::path& dir : cli.folders)
-    sections.push_back(report_section(recognise_folder(dir)));
+    sections.push_back(report_section(recognise_folder(dir), static_cast<int>(sections.size())));
   std::string summary = "<h2>Summary</h2>\n<ul>\n";
   std::string body;
   for (const ReportSection& section : sections) {
@@ -37,7 +38,10 @@ int run_report(const ReportCli& cli) {
     body += section.body;
   }
   summary += "</ul>\n";
-  const std::string page = html_document(cli.title, summary + body);
+  const bool charts = std::any_of(sections.begin(), sections.end(),
+                                  [](const ReportSection& s) { return s.charts; });
+  const std::string page =
+      html_document(cli.title, (charts ? inline_chart_library() : std::string()) + summary + body);
   io::write_file_atomically(cli.out, page);
   fmt::print("wrote {} ({} folders, {:.1f} MB): open it in a browser\n", cli.out.string(),
              sections.size(), static_cast<double>(page.size()) / 1e6);

@@ -88,7 +88,7 @@ ReportSection cycle_section(const ReportFolder& f) {
   return {headline, heading(f) + html_table({"path", "value"}, rows) + pictures(f.dir)};
 }
 
-ReportSection reproduce_section(const ReportFolder& f) {
+ReportSection reproduce_section(const ReportFolder& f, const std::string& chart_id) {
   std::vector<std::vector<std::string>> rows;
   int passed = 0;
   int checked = 0;
@@ -114,14 +114,31 @@ ReportSection reproduce_section(const ReportFolder& f) {
   const std::string note =
       "<p>A figure matches when the model lies within half a unit of the paper's last digit "
       "(8 sec: 7.5 to 8.5 s; 1.3 min: 75 to 81 s). A fitted figure matches by construction.</p>\n";
-  return {headline, heading(f) +
-                        html_table({"figure", "the paper", "paper s", "model s", "error", "fitted",
-                                    "against the paper"},
-                                   rows) +
-                        note + pictures(f.dir)};
+  json labels = json::array();
+  json paper = json::array();
+  json model = json::array();
+  for (const json& figure : f.doc["figures"]) {
+    labels.push_back(figure.value("name", ""));
+    paper.push_back(figure.value("paper_seconds", 0.0));
+    model.push_back(figure.value("model_seconds", 0.0));
+  }
+  const json chart = {
+      {"type", "bar"},
+      {"data",
+       {{"labels", labels},
+        {"datasets",
+         {{{"label", "the paper, s"}, {"data", paper}, {"backgroundColor", "#888"}},
+          {{"label", "the model, s"}, {"data", model}, {"backgroundColor", "#2a6"}}}}}}};
+  return {headline,
+          heading(f) +
+              html_table({"figure", "the paper", "paper s", "model s", "error", "fitted",
+                          "against the paper"},
+                         rows) +
+              note + chart_canvas(chart_id, chart) + pictures(f.dir),
+          true};
 }
 
-ReportSection campaign_section(const ReportFolder& f) {
+ReportSection campaign_section(const ReportFolder& f, const std::string& chart_id) {
   const json& s = f.doc;
   std::vector<std::vector<std::string>> rows;
   const json& outcomes = s.contains("outcomes") ? s["outcomes"] : kNothing;
@@ -131,7 +148,21 @@ ReportSection campaign_section(const ReportFolder& f) {
   const std::string headline = fmt::format(
       "campaign {}: {} runs, unsafe rate {} (95 % interval {} to {})", text(s["campaign"]),
       text(s["runs"]), number(s["unsafe_rate"], 4), number(ci[0], 4), number(ci[1], 4));
-  return {headline, heading(f) + html_table({"outcome", "runs"}, rows) + pictures(f.dir)};
+  json labels = json::array();
+  json counts = json::array();
+  for (const auto& [outcome, count] : outcomes.items()) {
+    labels.push_back(outcome);
+    counts.push_back(count);
+  }
+  const json chart = {
+      {"type", "bar"},
+      {"data",
+       {{"labels", labels},
+        {"datasets", {{{"label", "runs"}, {"data", counts}, {"backgroundColor", "#36a"}}}}}}};
+  return {headline,
+          heading(f) + html_table({"outcome", "runs"}, rows) + chart_canvas(chart_id, chart) +
+              pictures(f.dir),
+          true};
 }
 
 ReportSection traverse_section(const ReportFolder& f) {
@@ -149,7 +180,7 @@ ReportSection traverse_section(const ReportFolder& f) {
   return {headline, heading(f) + html_table({"traverse", "value"}, rows) + pictures(f.dir)};
 }
 
-ReportSection sweep_section(const ReportFolder& f) {
+ReportSection sweep_section(const ReportFolder& f, const std::string& chart_id) {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> successes;
   for (const json& k : f.doc["by_rocks"]) {
@@ -165,11 +196,26 @@ ReportSection sweep_section(const ReportFolder& f) {
   const std::string headline =
       fmt::format("traverse sweep, {} trials: success {}", text(f.doc["trials"]),
                   fmt::format("{}", fmt::join(successes, ", ")));
-  return {headline, heading(f) +
-                        html_table({"rock cover k", "trials", "success", "95 % interval",
-                                    "unsafe trials", "SPL"},
-                                   rows) +
-                        pictures(f.dir)};
+  json ks = json::array();
+  json rates = json::array();
+  for (const json& k : f.doc["by_rocks"]) {
+    ks.push_back(k.value("rocks", 0.0));
+    rates.push_back(100.0 * k.value("success_rate", 0.0));
+  }
+  const json chart = {
+      {"type", "line"},
+      {"data",
+       {{"labels", ks},
+        {"datasets",
+         {{{"label", "success, % of trials"}, {"data", rates}, {"borderColor", "#2a6"}}}}}},
+      {"options", {{"scales", {{"y", {{"min", 0}, {"max", 100}}}}}}}};
+  return {
+      headline,
+      heading(f) +
+          html_table({"rock cover k", "trials", "success", "95 % interval", "unsafe trials", "SPL"},
+                     rows) +
+          chart_canvas(chart_id, chart) + pictures(f.dir),
+      true};
 }
 
 } // namespace
@@ -188,22 +234,23 @@ std::optional<PaperCheck> check_against_paper(const std::string& paper_says, dou
   return check;
 }
 
-ReportSection report_section(const ReportFolder& folder) {
+ReportSection report_section(const ReportFolder& folder, int index) {
+  const std::string chart_id = fmt::format("chart-{}", index);
   switch (folder.kind) {
   case FolderKind::world:
     return world_section(folder);
   case FolderKind::cycle:
     return cycle_section(folder);
   case FolderKind::reproduce:
-    return reproduce_section(folder);
+    return reproduce_section(folder, chart_id);
   case FolderKind::campaign:
-    return campaign_section(folder);
+    return campaign_section(folder, chart_id);
   case FolderKind::traverse:
     return traverse_section(folder);
   case FolderKind::traverse_sweep:
     break;
   }
-  return sweep_section(folder);
+  return sweep_section(folder, chart_id);
 }
 
 } // namespace marsokhod::apps

@@ -12,10 +12,12 @@ namespace marsokhod::apps {
 /// One folder in the report.
 struct ReportSection {
   std::string headline; ///< one line of HTML for the summary at the top
-  std::string body;     ///< the folder's section: its figures and its pictures
+  std::string body;     ///< the folder's section: its figures, charts and pictures
+  bool charts = false;  ///< the body draws with Chart.js
 };
 
-ReportSection report_section(const ReportFolder& folder);
+/// The folder's section; `index`, its place in the page, keeps its charts' ids apart.
+ReportSection report_section(const ReportFolder& folder, int index);
 
 /// Whether a model figure matches a figure the paper states as text such as "takes 8 sec" or
 /// "1.3 min": within half a unit of the paper's last digit (8 s: 7.5..8.5 s; 1.3 min:

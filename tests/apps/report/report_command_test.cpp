@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 
 namespace marsokhod::apps {
@@ -36,6 +37,12 @@ TEST(PaperCheck, AFigureMatchesWithinHalfAUnitOfThePapersLastDigit) {
   EXPECT_FALSE(check_against_paper("no figure here", 1.0));
 }
 
+// A link or a source outside the page: what a browser would fetch.
+bool refers_outside(const std::string& html) {
+  static const std::regex kOutside(R"((src|href)\s*=\s*["']?\s*(https?:|//|/|file:))");
+  return std::regex_search(html, kOutside);
+}
+
 class ReportCommand : public ::testing::Test {
 protected:
   static void SetUpTestSuite() {
@@ -49,6 +56,14 @@ protected:
     const auto traverse =
         run_marsokhod("traverse --rocks 0 --goal-m 8 --size 64 --out " + quoted(dir_ / "traverse"));
     ASSERT_EQ(traverse.exit_code, 0) << traverse.err;
+    const auto sweep = run_marsokhod("eval traverse --seeds 1..2 --rocks 0,0.05 --goal-m 8 "
+                                     "--size 64 --out " +
+                                     quoted(dir_ / "sweep"));
+    ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
+    const auto campaign = run_marsokhod(
+        "campaign " + quoted(fs::path(MARSOKHOD_SOURCE_DIR) / "campaigns" / "hang-power.toml") +
+        " --runs 4 --seeds 2..2 --out " + quoted(dir_ / "campaign"));
+    ASSERT_EQ(campaign.exit_code, 0) << campaign.err;
   }
   static fs::path dir_;
 };
@@ -75,9 +90,24 @@ TEST_F(ReportCommand, OnePageHoldsEveryFolderWithItsPicturesAndFetchesNothing) {
        at = html.find("data:image/png;base64,", at + 1))
     ++embedded;
   EXPECT_EQ(embedded, pngs);
-  EXPECT_EQ(html.find("http:"), std::string::npos);
-  EXPECT_EQ(html.find("https:"), std::string::npos);
-  EXPECT_EQ(html.find(" src=\"/"), std::string::npos);
+  EXPECT_FALSE(refers_outside(html));
+}
+
+// The campaign's outcomes and the sweep's success against rock cover are drawn by Chart.js,
+// which the page carries itself, once.
+TEST_F(ReportCommand, ChartsAreDrawnByTheChartLibraryInsideThePage) {
+  const fs::path page = dir_ / "charts.html";
+  const auto result = run_marsokhod("report " + quoted(dir_ / "campaign") + " " +
+                                    quoted(dir_ / "sweep") + " --out " + quoted(page));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string html = slurp(page);
+  const std::size_t library = html.find("Chart.js v3");
+  ASSERT_NE(library, std::string::npos);
+  EXPECT_EQ(html.find("Chart.js v3", library + 1), std::string::npos) << "carried once";
+  for (const char* canvas : {"<canvas id=\"chart-0\">", "<canvas id=\"chart-1\">"})
+    EXPECT_NE(html.find(canvas), std::string::npos) << canvas;
+  EXPECT_NE(html.find("\"type\":\"line\""), std::string::npos);
+  EXPECT_FALSE(refers_outside(html));
 }
 
 TEST_F(ReportCommand, AFolderNoCommandWroteIsRefusedNamingIt) {
