@@ -2,6 +2,7 @@
 #include "report/report_sections.hpp"
 
 #include "report/html_page.hpp"
+#include "report/trace_timeline.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -67,7 +68,7 @@ ReportSection world_section(const ReportFolder& f) {
   return {headline, heading(f) + html_table({"terrain", "value"}, rows) + pictures(f.dir)};
 }
 
-ReportSection cycle_section(const ReportFolder& f) {
+ReportSection cycle_section(const ReportFolder& f, const std::string& chart_id) {
   const json& p = f.doc;
   const bool traced = fs::is_regular_file(f.dir / "trace.json");
   const std::string headline =
@@ -85,7 +86,9 @@ ReportSection cycle_section(const ReportFolder& f) {
       {"cost", number(p.value("cost", json()), 4)}};
   if (traced)
     rows.push_back({"trace", "trace.json beside it (Chrome trace: open in ui.perfetto.dev)"});
-  return {headline, heading(f) + html_table({"path", "value"}, rows) + pictures(f.dir)};
+  const std::string timeline = traced ? timeline_chart(f.dir / "trace.json", chart_id) : "";
+  return {headline, heading(f) + html_table({"path", "value"}, rows) + timeline + pictures(f.dir),
+          !timeline.empty()};
 }
 
 ReportSection reproduce_section(const ReportFolder& f, const std::string& chart_id) {
@@ -240,7 +243,7 @@ ReportSection report_section(const ReportFolder& folder, int index) {
   case FolderKind::world:
     return world_section(folder);
   case FolderKind::cycle:
-    return cycle_section(folder);
+    return cycle_section(folder, chart_id);
   case FolderKind::reproduce:
     return reproduce_section(folder, chart_id);
   case FolderKind::campaign:
