@@ -36,6 +36,20 @@ figcaption { font-size: 0.85em; color: #555; }
 .fail { color: #a00; font-weight: bold; }
 )";
 
+// The page marks what it drew, for a reader and for the browser test (docs/report.md): each
+// chart's canvas the number of points it holds, each picture whether it decoded.
+constexpr std::string_view kSelfCheck = R"(
+function marsokhodMarkDrawn(chart) {
+  let points = 0;
+  for (const set of chart.data.datasets) points += set.data.length;
+  chart.canvas.dataset.points = String(points);
+}
+window.addEventListener("load", function() {
+  for (const img of document.images)
+    img.dataset.loaded = img.complete && img.naturalWidth > 0 ? "yes" : "no";
+});
+)";
+
 } // namespace
 
 std::string html_escape(std::string_view text) {
@@ -109,16 +123,17 @@ std::string chart_canvas(std::string_view id, const nlohmann::json& config) {
   // "</" would end the script element early, whatever the JSON string held.
   for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 2))
     data.replace(at, 2, "<\\/");
-  return fmt::format("<div class=\"chart\"><canvas id=\"{0}\"></canvas></div>\n<script>new "
-                     "Chart(document.getElementById(\"{0}\"), {1});</script>\n",
+  return fmt::format("<div class=\"chart\"><canvas id=\"{0}\"></canvas></div>\n<script>"
+                     "marsokhodMarkDrawn(new Chart(document.getElementById(\"{0}\"), {1}));"
+                     "</script>\n",
                      html_escape(id), data);
 }
 
 std::string html_document(std::string_view title, std::string_view body) {
   return fmt::format("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                     "<title>{0}</title>\n<style>{1}</style>\n</head>\n<body>\n<h1>{0}</h1>\n{2}"
-                     "</body>\n</html>\n",
-                     html_escape(title), kStyle, body);
+                     "<title>{0}</title>\n<style>{1}</style>\n<script>{2}</script>\n</head>\n"
+                     "<body>\n<h1>{0}</h1>\n{3}</body>\n</html>\n",
+                     html_escape(title), kStyle, kSelfCheck, body);
 }
 
 } // namespace marsokhod::apps

@@ -148,6 +148,7 @@ std::string timeline_chart(const std::filesystem::path& trace, const std::string
   }}
   from.oninput = zoom;
   to.oninput = zoom;
+  marsokhodMarkDrawn(chart);
 }})();
 </script>
 )",
