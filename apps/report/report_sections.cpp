@@ -1,6 +1,7 @@
 // The report's section for each kind of folder, from the JSON the command wrote.
 #include "report/report_sections.hpp"
 
+#include "cli/command.hpp"
 #include "report/html_page.hpp"
 #include "report/trace_timeline.hpp"
 
@@ -8,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <regex>
 
@@ -35,6 +37,40 @@ std::string numbers(const json& values, int digits = 2) {
 
 std::string text(const json& value) {
   return html_escape(value.is_string() ? value.get<std::string>() : value.dump());
+}
+
+// The pictures each command always writes: a folder without one has lost it, and the page
+// says so rather than leave a hole.
+std::vector<std::string_view> expected_pictures(FolderKind kind) {
+  switch (kind) {
+  case FolderKind::world:
+    return {"left.png", "right.png", "gt_obstacles.png"};
+  case FolderKind::cycle:
+    return {"disparity.png", "elevation.png", "zones.png", "path_overlay.png"};
+  case FolderKind::reproduce:
+    return {"reproduce.png", "sweep.png"};
+  case FolderKind::campaign:
+    return {"outcomes.png"};
+  case FolderKind::traverse:
+    return {"map.png"};
+  case FolderKind::traverse_sweep:
+    break;
+  }
+  return {"success.png"};
+}
+
+std::string_view writer_of(FolderKind kind) {
+  constexpr std::array<std::string_view, 6> kWriters = {
+      "world", "nav and emulate", "reproduce", "campaign", "traverse", "eval traverse"};
+  return kWriters[static_cast<std::size_t>(kind)];
+}
+
+void require_pictures(const ReportFolder& f) {
+  for (const std::string_view name : expected_pictures(f.kind))
+    if (!fs::is_regular_file(f.dir / name))
+      throw CommandError(fmt::format("{}: missing; {} always writes it, so the folder is "
+                                     "incomplete",
+                                     (f.dir / name).string(), writer_of(f.kind)));
 }
 
 // Every PNG of the folder (not of its subfolders), in name order.
@@ -238,6 +274,7 @@ std::optional<PaperCheck> check_against_paper(const std::string& paper_says, dou
 }
 
 ReportSection report_section(const ReportFolder& folder, int index) {
+  require_pictures(folder);
   const std::string chart_id = fmt::format("chart-{}", index);
   switch (folder.kind) {
   case FolderKind::world:

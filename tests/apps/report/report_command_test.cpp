@@ -127,5 +127,34 @@ TEST_F(ReportCommand, AFolderNoCommandWroteIsRefusedNamingIt) {
   EXPECT_NE(broken.err.find("path.json"), std::string::npos) << broken.err;
 }
 
+// A folder that lost a picture its command always writes is refused, not shown with a hole.
+TEST_F(ReportCommand, AFolderMissingAPictureItsCommandWritesIsRefusedNamingIt) {
+  const fs::path copy = dir_ / "traverse-copy";
+  fs::remove_all(copy);
+  fs::copy(dir_ / "traverse", copy, fs::copy_options::recursive);
+  fs::remove(copy / "map.png");
+  const auto result =
+      run_marsokhod("report " + quoted(copy) + " --out " + quoted(dir_ / "holes.html"));
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find((copy / "map.png").string() + ": missing; traverse always writes it"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(dir_ / "holes.html"));
+}
+
+// A JSON file cut short is named with where parsing stopped.
+TEST_F(ReportCommand, ATruncatedJsonIsRefusedNamingTheFile) {
+  const fs::path copy = dir_ / "traverse-cut";
+  fs::remove_all(copy);
+  fs::copy(dir_ / "traverse", copy, fs::copy_options::recursive);
+  const std::string json = slurp(copy / "traverse.json");
+  std::ofstream(copy / "traverse.json", std::ios::trunc) << json.substr(0, json.size() / 2);
+  const auto result =
+      run_marsokhod("report " + quoted(copy) + " --out " + quoted(dir_ / "cut.html"));
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find((copy / "traverse.json").string()), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(dir_ / "cut.html"));
+}
+
 } // namespace
 } // namespace marsokhod::apps
