@@ -63,5 +63,7 @@ fi
 if [ "$console" != 0 ]; then
   grep -E "CONSOLE|Uncaught" "$out/browser.log" | head -5
 fi
+load_ms=$(grep -o 'data-load-ms="[0-9]*"' "$out/dom.html" | grep -o '[0-9]*' || true)
+echo "check-report: load event after ${load_ms:-?} ms"
 echo "check-report: screenshot $out/report.png, page $out/dom.html"
 exit "$failed"

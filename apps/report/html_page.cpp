@@ -37,7 +37,8 @@ figcaption { font-size: 0.85em; color: #555; }
 )";
 
 // The page marks what it drew, for a reader and for the browser test (docs/report.md): each
-// chart's canvas the number of points it holds, each picture whether it decoded.
+// chart's canvas the number of points it holds, each picture whether it decoded, and the body
+// how long the page took to its load event.
 constexpr std::string_view kSelfCheck = R"(
 function marsokhodMarkDrawn(chart) {
   let points = 0;
@@ -47,6 +48,7 @@ function marsokhodMarkDrawn(chart) {
 window.addEventListener("load", function() {
   for (const img of document.images)
     img.dataset.loaded = img.complete && img.naturalWidth > 0 ? "yes" : "no";
+  document.body.dataset.loadMs = String(Math.round(performance.now()));
 });
 )";
 
