@@ -5,7 +5,7 @@ set -eu
 
 packages="g++ cmake ninja-build pkgconf libboost-context-dev libeigen3-dev libfmt-dev libgtest-dev
 libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libpng-dev clang-format
-libjs-chart.js chromium"
+libjs-chart.js chromium libplplot-dev plplot-driver-cairo fonts-dejavu-core"
 
 missing=""
 for package in $packages; do

@@ -1,33 +1,32 @@
-// A few figures drawn side by side: axes, grid, the bars with their values, the legend.
+// A few figures drawn side by side by PLplot: axes, grid, the bars with their values, the legend.
 
 #include "marsokhod/imaging/pictures/bar_chart.hpp"
 
-#include "pictures/bitmap_font.hpp"
-#include "pictures/chart_drawing.hpp"
-#include "pictures/colour_scale.hpp"
+#include "pictures/plot_canvas.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <plplot/plplot.h>
 #include <stdexcept>
 
 namespace marsokhod::imaging {
 namespace {
 
-using namespace detail; // the strokes
+using namespace detail; // the canvas
 
 // The categorical palette of matplotlib's tab10, grey first; the fifth is red, so that a chart of
 // outcome classes in their order shows "unsafe" in red.
-constexpr std::array<Rgb, 8> kSeries{{{127, 127, 127},
-                                      {31, 119, 180},
-                                      {255, 127, 14},
-                                      {44, 160, 44},
-                                      {214, 39, 40},
-                                      {148, 103, 189},
-                                      {140, 86, 75},
-                                      {227, 119, 194}}};
+constexpr std::array<PlotColour, 8> kSeries{{{127, 127, 127},
+                                             {31, 119, 180},
+                                             {255, 127, 14},
+                                             {44, 160, 44},
+                                             {214, 39, 40},
+                                             {148, 103, 189},
+                                             {140, 86, 75},
+                                             {227, 119, 194}}};
 
 void check(const BarChart& chart) {
   if (chart.series.size() > kSeries.size())
@@ -52,12 +51,24 @@ double top_value(const BarChart& chart) {
   return top;
 }
 
-void draw_legend(ImageView<std::uint8_t> rgb, const BarChart& chart, int right, int y) {
-  int x = right;
-  for (std::size_t s = chart.series.size(); s-- > 0;) {
-    x -= text_width(chart.series[s], 1) + 24;
-    box(rgb, x, y, x + 10, y + 8, kSeries[s]);
-    text(rgb, x + 14, y, chart.series[s], kInk);
+// The label cut to what `room_px` holds, its end marked by an ellipsis.
+std::string fitted(const std::string& label, double room_px) {
+  const auto room = static_cast<std::size_t>(std::max(4.0, room_px / kPlotCharPx));
+  if (label.size() <= room)
+    return label;
+  return label.substr(0, room - 1) + "\u2026";
+}
+
+void draw_legend(const PlotCanvas& canvas, const BarChart& chart, double left) {
+  plvpor(left, 0.99, 0.30, 0.86);
+  plwind(0.0, 1.0, 0.0, 1.0);
+  const double step = 1.0 / std::max<double>(6.0, static_cast<double>(chart.series.size()));
+  for (std::size_t s = 0; s < chart.series.size(); ++s) {
+    const double y = 1.0 - step * (static_cast<double>(s) + 0.5);
+    canvas.colour(kSeries[s]);
+    plot_box(0.0, y - 0.15 * step, 0.08, y + 0.15 * step);
+    canvas.colour(kPlotInk);
+    plptex(0.14, y, 1.0, 0.0, 0.0, chart.series[s].c_str());
   }
 }
 
@@ -65,47 +76,60 @@ void draw_legend(ImageView<std::uint8_t> rgb, const BarChart& chart, int right, 
 
 Image<std::uint8_t> draw_bar_chart(const BarChart& chart) {
   check(chart);
-  Image<std::uint8_t> picture(chart.width, chart.height, 3, 255);
-  ImageView<std::uint8_t> rgb = picture.view();
-  const int left = 60;
-  const int top = 56;
-  const int right = chart.width - 20;
-  const int bottom = chart.height - 44;
-  const double y1 = top_value(chart);
-  const auto py = [&](double y) {
-    return bottom - static_cast<int>(std::lround(y / y1 * (bottom - top)));
-  };
-  const Ticks ticks = legend_ticks(0.0, y1);
-  for (std::size_t i = 0; i < ticks.values.size(); ++i) {
-    const int y = py(ticks.values[i]);
-    line(rgb, left, y, right, y, kGrid, 1);
-    text(rgb, left - 8 - text_width(ticks.labels[i], 1), y - 4, ticks.labels[i], kInk);
-  }
-  const int groups = std::max<int>(1, static_cast<int>(chart.groups.size()));
-  const int slot = (right - left) / groups;
-  const int bars = std::max<int>(1, static_cast<int>(chart.series.size()));
-  const int bar = std::max(4, (slot * 2 / 3) / bars);
-  for (int g = 0; g < static_cast<int>(chart.groups.size()); ++g) {
-    const BarChart::Group& group = chart.groups[static_cast<std::size_t>(g)];
-    const int centre = left + slot * g + slot / 2;
-    const int first = centre - bar * bars / 2;
-    for (int s = 0; s < static_cast<int>(group.values.size()); ++s) {
-      const std::optional<double>& v = group.values[static_cast<std::size_t>(s)];
+  PlotCanvas canvas(chart.width, chart.height);
+  const double top = top_value(chart);
+  const auto groups = static_cast<double>(std::max<std::size_t>(1, chart.groups.size()));
+  const auto bars = static_cast<double>(std::max<std::size_t>(1, chart.series.size()));
+  const double right = chart.series.size() > 1 ? 0.80 : 0.96;
+  // Group labels that would run into each other stand on end below their slots.
+  std::size_t longest = 0;
+  for (const BarChart::Group& g : chart.groups)
+    longest = std::max(longest, g.label.size());
+  const double slot_px = (right - 0.10) * chart.width / groups;
+  const bool crowded = static_cast<double>(longest) * kPlotCharPx > 0.95 * slot_px;
+  const double bottom =
+      crowded ? std::min(0.5, 0.06 + static_cast<double>(longest) * kPlotCharPx / chart.height)
+              : 0.14;
+  plvpor(0.10, right, bottom, 0.86);
+  plwind(0.0, groups, 0.0, top);
+  canvas.colour(kPlotGrid);
+  plbox("", 0.0, 0, "g", 0.0, 0);
+  canvas.colour(kPlotInk);
+  plbox("bc", 0.0, 0, "bcnstv", 0.0, 0);
+  const double width = 0.7 / bars;
+  for (std::size_t g = 0; g < chart.groups.size(); ++g) {
+    const BarChart::Group& group = chart.groups[g];
+    const double first = static_cast<double>(g) + 0.5 - 0.35;
+    for (std::size_t s = 0; s < group.values.size(); ++s) {
+      const std::optional<double>& v = group.values[s];
       if (!v)
         continue;
-      const int x0 = first + s * bar;
-      box(rgb, x0 + 1, py(*v), x0 + bar - 2, bottom, kSeries[static_cast<std::size_t>(s)]);
+      const double x0 = first + width * static_cast<double>(s);
+      canvas.colour(kSeries[s]);
+      plot_box(x0 + 0.05 * width, 0.0, x0 + 0.95 * width, *v);
+      // An empty bar says nothing worth a label; a row of zeros would hide the others.
+      if (*v == 0.0)
+        continue;
+      canvas.colour(kPlotInk);
       const std::string label = fmt::format(fmt::runtime(chart.value_format), *v);
-      text(rgb, x0 + bar / 2 - text_width(label, 1) / 2, py(*v) - 12, label, kInk);
+      plschr(0.0, 0.7);
+      plptex(x0 + 0.5 * width, *v + 0.025 * top, 1.0, 0.0, 0.5, label.c_str());
+      plschr(0.0, 0.85);
     }
-    text(rgb, centre - text_width(group.label, 1) / 2, bottom + 10, group.label, kInk);
+    canvas.colour(kPlotInk);
+    const double at = (static_cast<double>(g) + 0.5) / groups;
+    if (crowded)
+      plmtex("bv", 0.7, at, 1.0, fitted(group.label, bottom * chart.height - 24.0).c_str());
+    else
+      plmtex("b", 1.6, at, 0.5, group.label.c_str());
   }
-  line(rgb, left, bottom, right, bottom, kInk, 2);
-  line(rgb, left, top, left, bottom, kInk, 2);
-  text(rgb, left, 10, chart.title, kInk, kTitleScale);
-  text(rgb, 8, top - 16, chart.y_label, kInk);
-  draw_legend(rgb, chart, right, top - 16);
-  return picture;
+  plmtex("l", 4.2, 0.5, 0.5, chart.y_label.c_str());
+  plschr(0.0, 1.15);
+  plmtex("t", 2.0, 0.0, 0.0, chart.title.c_str());
+  plschr(0.0, 0.85);
+  if (chart.series.size() > 1)
+    draw_legend(canvas, chart, right + 0.01);
+  return canvas.take();
 }
 
 } // namespace marsokhod::imaging

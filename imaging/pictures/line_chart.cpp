@@ -1,10 +1,9 @@
-// A measured curve drawn for people: axes, ticks, the curve, the missing points and the marks.
+// A measured curve drawn for people by PLplot: axes, ticks, the curve, the missing points and the
+// marks.
 
 #include "marsokhod/imaging/pictures/line_chart.hpp"
 
-#include "pictures/bitmap_font.hpp"
-#include "pictures/chart_drawing.hpp"
-#include "pictures/colour_scale.hpp"
+#include "pictures/plot_canvas.hpp"
 
 #include <fmt/format.h>
 
@@ -12,28 +11,23 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <plplot/plplot.h>
 #include <stdexcept>
 
 namespace marsokhod::imaging {
 namespace {
 
-using namespace detail; // the strokes
+using namespace detail; // the canvas
 
-// The plot area inside the margins, and the value ranges it shows.
+constexpr PlotColour kCurveColour{31, 119, 180};
+constexpr PlotColour kMissingColour{214, 39, 40};
+constexpr PlotColour kMarkColour{120, 120, 120};
+
+// The ranges the plot shows: log10 of x, and y from 0.
 struct Frame {
-  int left = 0;
-  int top = 0;
-  int right = 0;
-  int bottom = 0;
   double log_x0 = 0.0;
   double log_x1 = 1.0;
   double y1 = 1.0;
-
-  int px(double x) const {
-    const double t = (std::log10(x) - log_x0) / (log_x1 - log_x0);
-    return left + static_cast<int>(std::lround(t * (right - left)));
-  }
-  int py(double y) const { return bottom - static_cast<int>(std::lround(y / y1 * (bottom - top))); }
 };
 
 void check(const LineChart& chart) {
@@ -57,10 +51,6 @@ Frame frame_of(const LineChart& chart, std::vector<double>& xs) {
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   Frame f;
-  f.left = 60;
-  f.top = 56;
-  f.right = chart.width - 30;
-  f.bottom = chart.height - 50;
   const double lo = xs.empty() ? 1.0 : xs.front();
   const double hi = xs.empty() ? 10.0 : xs.back();
   f.log_x0 = std::log10(lo) - 0.05;
@@ -75,61 +65,81 @@ std::string compact(double value) {
                                                     : fmt::format("{:g}", value);
 }
 
-void draw_axes(ImageView<std::uint8_t> rgb, const LineChart& chart, const Frame& f,
-               const std::vector<double>& xs) {
-  const detail::Ticks ticks = detail::legend_ticks(0.0, f.y1);
-  for (std::size_t i = 0; i < ticks.values.size(); ++i) {
-    const int y = f.py(ticks.values[i]);
-    line(rgb, f.left, y, f.right, y, kGrid, 1);
-    text(rgb, f.left - 8 - detail::text_width(ticks.labels[i], 1), y - 4, ticks.labels[i], kInk);
-  }
-  int free_from = 0; // a tick label that would overlap the one before is left out
+// A tick at every x given, labelled, its labels on end when they would run into each other.
+void draw_axes(const PlotCanvas& canvas, const LineChart& chart, const Frame& f,
+               const std::vector<double>& xs, bool crowded) {
+  canvas.colour(kPlotGrid);
+  for (const double x : xs)
+    pljoin(std::log10(x), 0.0, std::log10(x), f.y1);
+  plbox("", 0.0, 0, "g", 0.0, 0);
+  canvas.colour(kPlotInk);
+  plbox("bc", 0.0, 0, "bcnstv", 0.0, 0);
   for (const double x : xs) {
-    const int at = f.px(x);
-    line(rgb, at, f.top, at, f.bottom, kGrid, 1);
+    const double at = (std::log10(x) - f.log_x0) / (f.log_x1 - f.log_x0);
     const std::string label = compact(x);
-    const int start = at - detail::text_width(label, 1) / 2;
-    if (start < free_from)
-      continue;
-    text(rgb, start, f.bottom + 8, label, kInk);
-    free_from = start + detail::text_width(label, 1) + 6;
+    if (crowded)
+      plmtex("bv", 0.7, at, 1.0, label.c_str());
+    else
+      plmtex("b", 1.6, at, 0.5, label.c_str());
   }
-  line(rgb, f.left, f.bottom, f.right, f.bottom, kInk, 2);
-  line(rgb, f.left, f.top, f.left, f.bottom, kInk, 2);
-  text(rgb, f.left, 10, chart.title, kInk, kTitleScale);
-  text(rgb, (f.left + f.right - detail::text_width(chart.x_label, 1)) / 2, chart.height - 24,
-       chart.x_label, kInk);
-  text(rgb, 8, f.top - 16, chart.y_label, kInk);
+  plmtex("b", crowded ? 4.6 : 3.2, 0.5, 0.5, chart.x_label.c_str());
+  plmtex("l", 4.2, 0.5, 0.5, chart.y_label.c_str());
+  plschr(0.0, 1.15);
+  plmtex("t", 2.0, 0.0, 0.0, chart.title.c_str());
+  plschr(0.0, 0.85);
 }
 
 } // namespace
 
 Image<std::uint8_t> draw_line_chart(const LineChart& chart) {
   check(chart);
-  Image<std::uint8_t> picture(chart.width, chart.height, 3, 255);
-  ImageView<std::uint8_t> rgb = picture.view();
+  PlotCanvas canvas(chart.width, chart.height);
   std::vector<double> xs;
   const Frame f = frame_of(chart, xs);
-  draw_axes(rgb, chart, f, xs);
+  std::size_t longest = 0;
+  for (const double x : xs)
+    longest = std::max(longest, compact(x).size());
+  const double plot_px = 0.86 * chart.width;
+  const bool crowded =
+      !xs.empty() && static_cast<double>(xs.size() * longest) * kPlotCharPx > 0.8 * plot_px;
+  plvpor(0.10, 0.96, crowded ? 0.22 : 0.16, 0.86);
+  plwind(f.log_x0, f.log_x1, 0.0, f.y1);
+  draw_axes(canvas, chart, f, xs, crowded);
   for (const LineChart::Mark& m : chart.marks) {
-    const int at = f.px(m.x);
-    line(rgb, at, f.top, at, f.bottom, kMark, 2, 6);
-    text(rgb, at + 6, f.top + 4, m.label, kMark);
+    const double at = std::log10(m.x);
+    canvas.colour(kMarkColour);
+    pllsty(2);
+    pljoin(at, 0.0, at, f.y1);
+    pllsty(1);
+    // A mark near the right edge takes its label on its left, inside the plot.
+    const bool near_right = (at - f.log_x0) / (f.log_x1 - f.log_x0) > 0.7;
+    plptex(at, 0.95 * f.y1, 1.0, 0.0, near_right ? 1.05 : -0.05, m.label.c_str());
   }
   std::vector<LineChart::Point> points = chart.points;
   std::sort(points.begin(), points.end(),
             [](const LineChart::Point& a, const LineChart::Point& b) { return a.x < b.x; });
-  for (std::size_t i = 1; i < points.size(); ++i)
-    line(rgb, f.px(points[i - 1].x), f.py(points[i - 1].y), f.px(points[i].x), f.py(points[i].y),
-         kCurve, 3);
-  for (const LineChart::Point& p : points)
-    square(rgb, f.px(p.x), f.py(p.y), 4, kCurve);
-  for (const double x : chart.missing) {
-    const int at = f.px(x);
-    line(rgb, at - 6, f.bottom - 18, at + 6, f.bottom - 6, kMissing, 3);
-    line(rgb, at - 6, f.bottom - 6, at + 6, f.bottom - 18, kMissing, 3);
+  std::vector<PLFLT> px;
+  std::vector<PLFLT> py;
+  for (const LineChart::Point& p : points) {
+    px.push_back(std::log10(p.x));
+    py.push_back(p.y);
   }
-  return picture;
+  canvas.colour(kCurveColour);
+  plwidth(3.0);
+  if (px.size() > 1)
+    plline(static_cast<PLINT>(px.size()), px.data(), py.data());
+  const double dx = 0.008 * (f.log_x1 - f.log_x0);
+  const double dy = 0.015 * f.y1;
+  for (std::size_t i = 0; i < px.size(); ++i)
+    plot_box(px[i] - dx, py[i] - dy, px[i] + dx, py[i] + dy);
+  canvas.colour(kMissingColour);
+  for (const double x : chart.missing) {
+    const double at = std::log10(x);
+    pljoin(at - 1.5 * dx, 1.0 * dy, at + 1.5 * dx, 4.0 * dy);
+    pljoin(at - 1.5 * dx, 4.0 * dy, at + 1.5 * dx, 1.0 * dy);
+  }
+  plwidth(1.0);
+  return canvas.take();
 }
 
 } // namespace marsokhod::imaging
