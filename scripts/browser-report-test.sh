@@ -30,6 +30,8 @@ run reproduce --seeds 1 --sweep-external-kb 256,1024 --out "$out/reproduce"
 run campaign "$here/../campaigns/hang-power.toml" --runs 8 --seeds 2..2 --out "$out/campaign"
 run traverse --rocks 0 --goal-m 8 --size 64 --out "$out/traverse"
 run eval traverse --seeds 1..2 --rocks 0,0.05 --goal-m 8 --size 64 --out "$out/sweep"
-run report "$out/world" "$out/nav" "$out/emulate" "$out/reproduce" "$out/campaign" \
-  "$out/traverse" "$out/sweep" --out "$out/report.html"
-sh "$here/check-report-in-browser.sh" "$out/report.html" 7 "$out/browser"
+run eval terrain --seeds 1..2 --size 64 --terrain-size 16 --pictures "$out/terrain"
+run fault --platform onboard --inject hang:module0@1s --out "$out/fault"
+run report "$out/world" "$out/nav" "$out/emulate" "$out/reproduce" "$out/fault" "$out/campaign" \
+  "$out/traverse" "$out/sweep" "$out/terrain" --out "$out/report.html"
+sh "$here/check-report-in-browser.sh" "$out/report.html" 9 "$out/browser"

@@ -56,8 +56,8 @@ canvases=$(count '<canvas ')
 check "charts with points drawn" "$(count 'data-points="[1-9]')" "$canvases"
 images=$(count '<img ')
 check "pictures decoded" "$(count 'data-loaded="yes"')" "$images"
-if [ "$canvases" -eq 0 ] || [ "$images" -eq 0 ]; then
-  echo "check-report: FAILED the page holds $canvases charts and $images pictures"
+if [ "$canvases" -eq 0 ] && [ "$images" -eq 0 ]; then
+  echo "check-report: FAILED the page holds no chart and no picture"
   failed=1
 fi
 if [ "$console" != 0 ]; then

@@ -9,6 +9,8 @@
 #include "marsokhod/emulator/platform/platform.hpp"
 #include "marsokhod/eval/campaign/campaign_scene.hpp"
 #include "marsokhod/eval/faults/fault_record.hpp"
+#include "marsokhod/imaging/image/output_folder.hpp"
+#include "marsokhod/io/files/file_writer.hpp"
 #include "marsokhod/nav_program/run/navigation_program.hpp"
 #include "marsokhod/overswitch/faults/split_mix.hpp"
 #include "marsokhod/overswitch/protection/protection.hpp"
@@ -17,6 +19,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -37,6 +40,7 @@ struct FaultCli {
   bool link_checksums = false;
   bool terrain_check = false;
   std::optional<std::string> trace;
+  std::optional<std::filesystem::path> out;
   bool json = false;
 };
 
@@ -79,6 +83,13 @@ int run_fault(const FaultCli& cli) {
   overswitch::require_overswitch(platform, platform.source);
   const std::vector<overswitch::Fault> faults = parse_faults(cli, platform);
   const nav_program::Placement placement = nav_program::load_program_placement(platform);
+  if (cli.out)
+    imaging::prepare_output_folder(*cli.out);
+  // A folder holds the run's trace too, so that `report` draws its timeline.
+  const std::optional<std::string> trace =
+      cli.trace ? cli.trace
+                : (cli.out ? std::optional<std::string>((*cli.out / "trace.json").string())
+                           : std::nullopt);
   if (!cli.json)
     fmt::print(stderr, "rendering world seed {} at 128x128...\n", cli.seed);
   const std::unique_ptr<eval::CampaignScene> scene =
@@ -89,14 +100,19 @@ int run_fault(const FaultCli& cli) {
     return eval::emulate_supervised(*scene, platform, placement, supervisor, sink);
   };
   const nav_program::CycleEmulation run =
-      cli.trace ? with_trace_file(*cli.trace, [&](emu::ChromeTraceWriter& w) { return faulty(&w); })
-                : faulty(nullptr);
+      trace ? with_trace_file(*trace, [&](emu::ChromeTraceWriter& w) { return faulty(&w); })
+            : faulty(nullptr);
   const eval::FaultVerdict verdict = eval::judge_scene_run(*scene, run, supervisor);
+  const auto json = fault_run_json(platform.name, cli.seed, verdict, supervisor, run);
+  if (cli.out)
+    io::write_file_atomically(*cli.out / "fault.json", json.dump(2) + "\n");
   if (!cli.json) {
     print_verdict(verdict, supervisor);
+    if (cli.out)
+      fmt::print("wrote fault.json and trace.json to {}\n", cli.out->string());
     return kSuccess;
   }
-  fmt::print("{}\n", fault_run_json(platform.name, cli.seed, verdict, supervisor, run).dump(2));
+  fmt::print("{}\n", json.dump(2));
   return kSuccess;
 }
 
@@ -136,6 +152,9 @@ Command make_fault_command(CLI::App& parent) {
                 "Word sums of the kept terrain's rows, checked each time zones and path rebuild "
                 "one; a struck row halts its module");
   app->add_option("--trace", cli->trace, "Write a Chrome trace (Perfetto) of the faulty run here");
+  app->add_option("--out", cli->out,
+                  "Also write the verdict (fault.json) and, without --trace, the trace "
+                  "(trace.json) into this folder, created if missing");
   app->add_flag("--json", cli->json, "Print a machine-readable verdict on stdout");
   return {app, [cli] {
             try {

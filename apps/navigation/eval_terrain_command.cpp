@@ -7,12 +7,14 @@
 #include "marsokhod/eval/common/errors.hpp"
 #include "marsokhod/eval/terrain/terrain_evaluation.hpp"
 #include "marsokhod/eval/terrain/terrain_figures.hpp"
+#include "marsokhod/io/files/file_writer.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +22,8 @@
 
 namespace marsokhod::apps {
 namespace {
+
+namespace fs = std::filesystem;
 
 struct TerrainCli {
   std::string seeds;
@@ -50,8 +54,9 @@ nlohmann::ordered_json number_or_null(double value) {
   return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
 }
 
-void print_json(const eval::TerrainEvaluationOptions& options, const eval::TerrainFigures& f,
-                const std::vector<eval::SeedOutcome>& outcomes) {
+nlohmann::ordered_json figures_json(const eval::TerrainEvaluationOptions& options,
+                                    const eval::TerrainFigures& f,
+                                    const std::vector<eval::SeedOutcome>& outcomes) {
   nlohmann::ordered_json json;
   json["seeds"] = f.seeds;
   json["size"] = options.size;
@@ -99,7 +104,7 @@ void print_json(const eval::TerrainEvaluationOptions& options, const eval::Terra
       entry["unsafe_because"] = eval::describe(*o.unsafe_hit);
     json["per_seed"].push_back(entry);
   }
-  fmt::print("{}\n", json.dump(2));
+  return json;
 }
 
 std::string shown(double value) {
@@ -205,7 +210,8 @@ Command add_terrain_evaluation(CLI::App& parent) {
                 "rules alone)");
   app->add_option("--pictures", cli->evaluation.pictures,
                   "Folder (created if missing) for one picture per seed, seed-N.png: left image, "
-                  "zones judged against ground truth, ground-truth zones");
+                  "zones judged against ground truth, ground-truth zones; and terrain.json, the "
+                  "figures as --json prints them");
   app->add_flag("--json", cli->json, "Print one JSON object instead of a table");
   return {app, [cli] {
             const eval::SeedRange range = seed_range_option(cli->seeds);
@@ -216,8 +222,13 @@ Command add_terrain_evaluation(CLI::App& parent) {
                   fmt::print(stderr, "seed {}/{} ({})\n", position, count, seed);
                 });
             const eval::TerrainFigures figures = eval::terrain_figures(outcomes);
+            const nlohmann::ordered_json json = figures_json(cli->evaluation, figures, outcomes);
+            // The pictures' folder holds the figures too: `report` reads it by them.
+            if (!cli->evaluation.pictures.empty())
+              io::write_file_atomically(fs::path(cli->evaluation.pictures) / "terrain.json",
+                                        json.dump(2) + "\n");
             if (cli->json)
-              print_json(cli->evaluation, figures, outcomes);
+              fmt::print("{}\n", json.dump(2));
             else
               print_table(cli->evaluation, figures, outcomes);
             return static_cast<int>(kSuccess);

@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include <array>
 #include <optional>
 #include <utility>
 
@@ -34,18 +33,51 @@ bool holds(const std::optional<nlohmann::json>& doc, const char* key) {
 
 } // namespace
 
+namespace {
+
+struct KindTexts {
+  std::string_view name;
+  std::string_view writer; ///< the command that writes such a folder
+};
+
+KindTexts texts_of(FolderKind kind) {
+  switch (kind) {
+  case FolderKind::world:
+    return {"world", "world"};
+  case FolderKind::cycle:
+    return {"navigation cycle", "nav and emulate"};
+  case FolderKind::reproduce:
+    return {"reproduce", "reproduce"};
+  case FolderKind::campaign:
+    return {"campaign", "campaign"};
+  case FolderKind::traverse:
+    return {"traverse", "traverse"};
+  case FolderKind::traverse_sweep:
+    return {"traverse sweep", "eval traverse"};
+  case FolderKind::terrain:
+    return {"terrain evaluation", "eval terrain"};
+  case FolderKind::fault:
+    break;
+  }
+  return {"fault run", "fault"};
+}
+
+} // namespace
+
 std::string_view to_string(FolderKind kind) {
-  constexpr std::array<std::string_view, 6> kNames = {
-      "world", "navigation cycle", "reproduce", "campaign", "traverse", "traverse sweep"};
-  return kNames[static_cast<std::size_t>(kind)];
+  return texts_of(kind).name;
+}
+
+std::string_view writer_of(FolderKind kind) {
+  return texts_of(kind).writer;
 }
 
 ReportFolder recognise_folder(const fs::path& dir) {
   std::error_code error;
   if (!fs::is_directory(dir, error))
     throw CommandError(fmt::format("{}: not a folder; report reads the output folders of nav, "
-                                   "emulate, world, reproduce, campaign, traverse and eval "
-                                   "traverse",
+                                   "emulate, world, reproduce, fault --out, campaign, traverse, "
+                                   "eval traverse and eval terrain --pictures",
                                    dir.string()));
   if (auto doc = json_in(dir, "traverse.json"); holds(doc, "outcome"))
     return {dir, FolderKind::traverse, std::move(*doc)};
@@ -54,14 +86,19 @@ ReportFolder recognise_folder(const fs::path& dir) {
   if (auto doc = json_in(dir, "summary.json"); holds(doc, "campaign") || holds(doc, "by_rocks"))
     return {dir, holds(doc, "campaign") ? FolderKind::campaign : FolderKind::traverse_sweep,
             std::move(*doc)};
+  if (auto doc = json_in(dir, "fault.json"); holds(doc, "outcome"))
+    return {dir, FolderKind::fault, std::move(*doc)};
+  if (auto doc = json_in(dir, "terrain.json"); holds(doc, "per_seed"))
+    return {dir, FolderKind::terrain, std::move(*doc)};
   if (auto doc = json_in(dir, "path.json"); holds(doc, "found"))
     return {dir, FolderKind::cycle, std::move(*doc)};
   if (auto doc = json_in(dir, "scene.json"); holds(doc, "terrain"))
     return {dir, FolderKind::world, std::move(*doc)};
   throw CommandError(fmt::format(
       "{}: not an output folder report knows: it looks for traverse.json (traverse), "
-      "reproduce.json (reproduce), summary.json (campaign, eval traverse), path.json (nav, "
-      "emulate) or scene.json (world)",
+      "reproduce.json (reproduce), summary.json (campaign, eval traverse), fault.json (fault "
+      "--out), terrain.json (eval terrain --pictures), path.json (nav, emulate) or scene.json "
+      "(world)",
       dir.string()));
 }
 

@@ -17,9 +17,13 @@ enum class FolderKind {
   campaign,       ///< campaign: summary.json naming its campaign, runs.jsonl
   traverse,       ///< traverse: traverse.json
   traverse_sweep, ///< eval traverse: summary.json with by_rocks, trials.jsonl
+  terrain,        ///< eval terrain --pictures: terrain.json
+  fault,          ///< fault --out: fault.json and its trace.json
 };
 
 std::string_view to_string(FolderKind kind);
+/// The command that writes such a folder ("eval traverse").
+std::string_view writer_of(FolderKind kind);
 
 /// A recognised output folder and the JSON that identified it.
 struct ReportFolder {

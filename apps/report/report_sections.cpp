@@ -54,15 +54,12 @@ std::vector<std::string_view> expected_pictures(FolderKind kind) {
   case FolderKind::traverse:
     return {"map.png"};
   case FolderKind::traverse_sweep:
+    return {"success.png"};
+  case FolderKind::terrain:
+  case FolderKind::fault:
     break;
   }
-  return {"success.png"};
-}
-
-std::string_view writer_of(FolderKind kind) {
-  constexpr std::array<std::string_view, 6> kWriters = {
-      "world", "nav and emulate", "reproduce", "campaign", "traverse", "eval traverse"};
-  return kWriters[static_cast<std::size_t>(kind)];
+  return {};
 }
 
 void require_pictures(const ReportFolder& f) {
@@ -257,6 +254,55 @@ ReportSection sweep_section(const ReportFolder& f, const std::string& chart_id) 
       true};
 }
 
+ReportSection terrain_section(const ReportFolder& f) {
+  const json& t = f.doc;
+  const std::string headline = fmt::format(
+      "terrain evaluation, {} seeds in {}: obstacle recall {} %, false prohibition {} %, paths "
+      "found on {} of {} sites where the truth has one, {} unsafe",
+      text(t["seeds"]), text(t["light"]), number(t["obstacle_recall"], 1),
+      number(t["false_prohibited"], 1), text(t["paths_found_where_ground_truth_has_one"]),
+      text(t["ground_truth_paths"]), text(t["unsafe_paths"]));
+  std::vector<std::vector<std::string>> rows;
+  for (const char* key :
+       {"seeds", "size", "light", "rocks", "stereo", "obstacle_recall", "false_prohibited",
+        "paths_found", "ground_truth_paths", "paths_found_where_ground_truth_has_one",
+        "unsafe_paths", "unsafe_paths_pixel_rule"})
+    if (t.contains(key))
+      rows.push_back({key, t[key].is_number_float() ? number(t[key]) : text(t[key])});
+  std::vector<std::vector<std::string>> unsafe;
+  for (const json& seed : t.value("per_seed", json::array()))
+    if (seed.contains("unsafe_because"))
+      unsafe.push_back({text(seed["seed"]), text(seed["unsafe_because"])});
+  std::string body = heading(f) + html_table({"evaluation", "value"}, rows);
+  if (!unsafe.empty())
+    body += html_table({"unsafe seed", "why"}, unsafe);
+  return {headline, body + pictures(f.dir)};
+}
+
+ReportSection fault_section(const ReportFolder& f, const std::string& chart_id) {
+  const json& v = f.doc;
+  std::vector<std::string> specs;
+  for (const json& fault : v.value("faults", json::array()))
+    specs.push_back(fault.value("spec", ""));
+  const std::string faults = fmt::format("{}", fmt::join(specs, ", "));
+  const std::string headline =
+      fmt::format("fault run ({}): {}, {} failover{}, {}", html_escape(faults), text(v["outcome"]),
+                  v.value("failovers", json::array()).size(),
+                  v.value("failovers", json::array()).size() == 1 ? "" : "s",
+                  v.value("unsafe", false) ? "unsafe" : "safe");
+  std::vector<std::vector<std::string>> rows = {{"faults", html_escape(faults)}};
+  rows.push_back({"failovers", std::to_string(v.value("failovers", json::array()).size())});
+  for (const char* key : {"outcome", "activated", "detected", "detection_latency_s", "recovery_s",
+                          "restarts", "path_equals_golden", "unsafe", "telemetry_lost",
+                          "wheels_commanded_while_failed", "emulated_s", "delay_s"})
+    if (v.contains(key))
+      rows.push_back({key, v[key].is_number_float() ? number(v[key], 3) : text(v[key])});
+  const bool traced = fs::is_regular_file(f.dir / "trace.json");
+  const std::string timeline = traced ? timeline_chart(f.dir / "trace.json", chart_id) : "";
+  return {headline, heading(f) + html_table({"verdict", "value"}, rows) + timeline,
+          !timeline.empty()};
+}
+
 } // namespace
 
 std::optional<PaperCheck> check_against_paper(const std::string& paper_says, double model_s) {
@@ -288,9 +334,13 @@ ReportSection report_section(const ReportFolder& folder, int index) {
   case FolderKind::traverse:
     return traverse_section(folder);
   case FolderKind::traverse_sweep:
+    return sweep_section(folder, chart_id);
+  case FolderKind::fault:
+    return fault_section(folder, chart_id);
+  case FolderKind::terrain:
     break;
   }
-  return sweep_section(folder, chart_id);
+  return terrain_section(folder);
 }
 
 } // namespace marsokhod::apps

@@ -145,6 +145,8 @@ const std::vector<OptionCase> kCases = {
     {"marsokhod fault --inject", Takes::text, "fault --platform onboard --inject {}"},
     {"marsokhod fault --trace", Takes::output_file,
      "fault --platform onboard --inject hang:module0@1s --trace {}"},
+    {"marsokhod fault --out", Takes::output_folder,
+     "fault --platform onboard --inject hang:module0@1s --out {}"},
     {"marsokhod campaign FILE", Takes::input_file, "campaign {} --runs 1"},
     {"marsokhod campaign --seeds", Takes::text, "campaign {C} --runs 1 --seeds {}"},
     {"marsokhod campaign --out", Takes::output_folder,
