@@ -12,6 +12,10 @@ set -eu
 
 scope="${1:-layers}"
 
+# Leaks in third-party caches that live as long as the process (scripts/lsan-suppressions.txt).
+LSAN_OPTIONS="suppressions=$(cd "$(dirname "$0")" && pwd)/lsan-suppressions.txt${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+export LSAN_OPTIONS
+
 cmake --preset sanitize >/dev/null
 
 if [ "$scope" = "all" ]; then
