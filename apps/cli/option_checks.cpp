@@ -41,7 +41,17 @@ CLI::Validator integer_one_of(std::vector<int> values) {
       description);
 }
 
-namespace {
+std::optional<std::pair<double, double>> real_band(const std::string& text, double low,
+                                                   double high) {
+  const std::size_t dots = text.find("..");
+  if (dots == std::string::npos)
+    return std::nullopt;
+  const std::optional<double> near = io::parse_finite(text.substr(0, dots));
+  const std::optional<double> far = io::parse_finite(text.substr(dots + 2));
+  if (!near || !far || *near < low || *far > high || *far < *near)
+    return std::nullopt;
+  return std::pair{*near, *far};
+}
 
 std::vector<std::string> comma_items(const std::string& text) {
   std::vector<std::string> items;
@@ -54,8 +64,6 @@ std::vector<std::string> comma_items(const std::string& text) {
     begin = comma + 1;
   }
 }
-
-} // namespace
 
 CLI::Validator whole_number_list(std::uint64_t low, std::uint64_t high, std::size_t max_items) {
   return detail::named_check(

@@ -12,6 +12,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace marsokhod::apps {
@@ -53,6 +54,14 @@ CLI::Validator integer_between(Int low, Int high) {
 /// A decimal integer that is one of `values` (e.g. the image sides 128 and 256); attach it with
 /// Option::transform, as integer_between.
 CLI::Validator integer_one_of(std::vector<int> values);
+
+/// "A..B", two finite decimals with low <= A <= B <= high (a band of distances, say); nothing
+/// when the text is not one.
+std::optional<std::pair<double, double>> real_band(const std::string& text, double low,
+                                                   double high);
+
+/// The items of a comma-separated list, empty ones included ("64,,128" has three).
+std::vector<std::string> comma_items(const std::string& text);
 
 /// A comma-separated list of at most `max_items` decimal integers, each between `low` and
 /// `high`, as integer_between reads one; an empty item ("64,,128", "64,") is refused, where

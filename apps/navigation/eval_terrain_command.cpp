@@ -37,17 +37,13 @@ constexpr double kNearestTarget = 1.0;
 constexpr double kFarthestTarget = 20.0; // the zones judge no point beyond 20 m
 
 void read_target_band(const std::string& text, eval::TerrainEvaluationOptions& evaluation) {
-  const std::size_t dots = text.find("..");
-  const std::optional<double> near =
-      dots == std::string::npos ? std::nullopt : io::parse_finite(text.substr(0, dots));
-  const std::optional<double> far =
-      dots == std::string::npos ? std::nullopt : io::parse_finite(text.substr(dots + 2));
-  if (!near || !far || *near < kNearestTarget || *far > kFarthestTarget || *far < *near)
+  const auto band = real_band(text, kNearestTarget, kFarthestTarget);
+  if (!band)
     throw UsageError(fmt::format("--target '{}': write A..B in metres, {} <= A <= B <= {} (the "
                                  "paper's band is 10..12)",
                                  text, kNearestTarget, kFarthestTarget));
-  evaluation.target_min_m = *near;
-  evaluation.target_max_m = *far;
+  evaluation.target_min_m = band->first;
+  evaluation.target_max_m = band->second;
 }
 
 nlohmann::ordered_json number_or_null(double value) {

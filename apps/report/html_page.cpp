@@ -3,12 +3,12 @@
 
 #include "cli/command.hpp"
 
+#include "marsokhod/io/files/input_error.hpp"
+#include "marsokhod/io/files/text_file.hpp"
+
 #include <boost/archive/iterators/base64_from_binary.hpp>
 #include <boost/archive/iterators/transform_width.hpp>
 #include <fmt/format.h>
-
-#include <fstream>
-#include <iterator>
 
 namespace marsokhod::apps {
 namespace {
@@ -82,10 +82,7 @@ std::string html_escape(std::string_view text) {
 }
 
 std::string embedded_png(const std::filesystem::path& png) {
-  std::ifstream in(png, std::ios::binary);
-  if (!in)
-    throw CommandError(fmt::format("{}: cannot read the picture", png.string()));
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = io::read_text_file(png, "picture");
   const std::string name = html_escape(png.filename().string());
   return fmt::format("<figure><img alt=\"{0}\" src=\"data:image/png;base64,{1}\"><figcaption>{0}"
                      "</figcaption></figure>\n",
@@ -108,27 +105,32 @@ std::string html_table(const std::vector<std::string>& header,
 }
 
 std::string inline_chart_library() {
-  std::ifstream in(kChartJsFile, std::ios::binary);
-  if (!in)
-    throw CommandError(fmt::format("{}: cannot read Chart.js (Debian package libjs-chart.js; "
-                                   "make run and make test install it)",
-                                   kChartJsFile));
-  const std::string code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string code;
+  try {
+    code = io::read_text_file(kChartJsFile, "Chart.js library");
+  } catch (const io::InputError& error) {
+    throw CommandError(fmt::format("{} (Debian package libjs-chart.js; make run and make test "
+                                   "install it)",
+                                   error.what()));
+  }
   if (code.find("</script") != std::string::npos)
     throw CommandError(
         fmt::format("{}: holds '</script', which would end the page's script", kChartJsFile));
   return "<script>\n" + code + "\n</script>\n";
 }
 
+std::string script_json(const nlohmann::json& value) {
+  std::string text = value.dump();
+  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 2))
+    text.replace(at, 2, "<\\/");
+  return text;
+}
+
 std::string chart_canvas(std::string_view id, const nlohmann::json& config) {
-  std::string data = config.dump();
-  // "</" would end the script element early, whatever the JSON string held.
-  for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 2))
-    data.replace(at, 2, "<\\/");
   return fmt::format("<div class=\"chart\"><canvas id=\"{0}\"></canvas></div>\n<script>"
                      "marsokhodMarkDrawn(new Chart(document.getElementById(\"{0}\"), {1}));"
                      "</script>\n",
-                     html_escape(id), data);
+                     html_escape(id), script_json(config));
 }
 
 std::string html_document(std::string_view title, std::string_view body) {

@@ -14,7 +14,7 @@ namespace marsokhod::apps {
 std::string html_escape(std::string_view text);
 
 /// An <img> whose source is the PNG file itself, base64-encoded into a data: URI, with its
-/// file name as caption; CommandError naming the file when it cannot be read.
+/// file name as caption; io::InputError naming the file when it cannot be read.
 std::string embedded_png(const std::filesystem::path& png);
 
 /// A table: a header row and rows of cells, each cell already HTML.
@@ -27,6 +27,10 @@ inline constexpr const char* kChartJsFile = "/usr/share/javascript/chart.js/char
 /// A <script> holding Chart.js itself; CommandError naming the file and its package when it
 /// cannot be read.
 std::string inline_chart_library();
+
+/// `value` as JSON text that can stand inside a <script>: "</" is written "<\/", so that no
+/// string it holds can end the script element early.
+std::string script_json(const nlohmann::json& value);
 
 /// A chart drawn by Chart.js in the page: a <canvas> and the script that draws `config` (a
 /// Chart.js configuration) on it.

@@ -83,6 +83,12 @@ std::string pictures(const fs::path& dir) {
   return html.empty() ? html : "<div class=\"pictures\">\n" + html + "</div>\n";
 }
 
+// The timeline of the folder's trace.json, empty without one.
+std::string folder_timeline(const fs::path& dir, const std::string& chart_id) {
+  const fs::path trace = dir / "trace.json";
+  return fs::is_regular_file(trace) ? timeline_chart(trace, chart_id) : std::string();
+}
+
 std::string heading(const ReportFolder& f) {
   return fmt::format("<h2>{}: {}</h2>\n", html_escape(std::string(to_string(f.kind))),
                      html_escape(f.dir.string()));
@@ -119,7 +125,7 @@ ReportSection cycle_section(const ReportFolder& f, const std::string& chart_id) 
       {"cost", number(p.value("cost", json()), 4)}};
   if (traced)
     rows.push_back({"trace", "trace.json beside it (Chrome trace: open in ui.perfetto.dev)"});
-  const std::string timeline = traced ? timeline_chart(f.dir / "trace.json", chart_id) : "";
+  const std::string timeline = folder_timeline(f.dir, chart_id);
   return {headline, heading(f) + html_table({"path", "value"}, rows) + timeline + pictures(f.dir),
           !timeline.empty()};
 }
@@ -128,8 +134,14 @@ ReportSection reproduce_section(const ReportFolder& f, const std::string& chart_
   std::vector<std::vector<std::string>> rows;
   int passed = 0;
   int checked = 0;
+  json labels = json::array();
+  json paper = json::array();
+  json model_seconds = json::array();
   for (const json& figure : f.doc["figures"]) {
     const double model = figure.value("model_seconds", 0.0);
+    labels.push_back(figure.value("name", ""));
+    paper.push_back(figure.value("paper_seconds", 0.0));
+    model_seconds.push_back(model);
     const auto check = check_against_paper(figure.value("paper_says", ""), model);
     std::string verdict = "-";
     if (check) {
@@ -150,21 +162,13 @@ ReportSection reproduce_section(const ReportFolder& f, const std::string& chart_
   const std::string note =
       "<p>A figure matches when the model lies within half a unit of the paper's last digit "
       "(8 sec: 7.5 to 8.5 s; 1.3 min: 75 to 81 s). A fitted figure matches by construction.</p>\n";
-  json labels = json::array();
-  json paper = json::array();
-  json model = json::array();
-  for (const json& figure : f.doc["figures"]) {
-    labels.push_back(figure.value("name", ""));
-    paper.push_back(figure.value("paper_seconds", 0.0));
-    model.push_back(figure.value("model_seconds", 0.0));
-  }
   const json chart = {
       {"type", "bar"},
       {"data",
        {{"labels", labels},
         {"datasets",
          {{{"label", "the paper, s"}, {"data", paper}, {"backgroundColor", "#888"}},
-          {{"label", "the model, s"}, {"data", model}, {"backgroundColor", "#2a6"}}}}}}};
+          {{"label", "the model, s"}, {"data", model_seconds}, {"backgroundColor", "#2a6"}}}}}}};
   return {headline,
           heading(f) +
               html_table({"figure", "the paper", "paper s", "model s", "error", "fitted",
@@ -178,18 +182,17 @@ ReportSection campaign_section(const ReportFolder& f, const std::string& chart_i
   const json& s = f.doc;
   std::vector<std::vector<std::string>> rows;
   const json& outcomes = s.contains("outcomes") ? s["outcomes"] : kNothing;
-  for (const auto& [outcome, count] : outcomes.items())
+  json labels = json::array();
+  json counts = json::array();
+  for (const auto& [outcome, count] : outcomes.items()) {
     rows.push_back({html_escape(outcome), text(count)});
+    labels.push_back(outcome);
+    counts.push_back(count);
+  }
   const json ci = s.value("unsafe_ci95", json::array({0.0, 0.0}));
   const std::string headline = fmt::format(
       "campaign {}: {} runs, unsafe rate {} (95 % interval {} to {})", text(s["campaign"]),
       text(s["runs"]), number(s["unsafe_rate"], 4), number(ci[0], 4), number(ci[1], 4));
-  json labels = json::array();
-  json counts = json::array();
-  for (const auto& [outcome, count] : outcomes.items()) {
-    labels.push_back(outcome);
-    counts.push_back(count);
-  }
   const json chart = {
       {"type", "bar"},
       {"data",
@@ -219,7 +222,11 @@ ReportSection traverse_section(const ReportFolder& f) {
 ReportSection sweep_section(const ReportFolder& f, const std::string& chart_id) {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> successes;
+  json ks = json::array();
+  json rates = json::array();
   for (const json& k : f.doc["by_rocks"]) {
+    ks.push_back(k.value("rocks", 0.0));
+    rates.push_back(100.0 * k.value("success_rate", 0.0));
     const json ci = k.value("success_ci95", json::array({0.0, 0.0}));
     rows.push_back({number(k["rocks"]), text(k["trials"]),
                     fmt::format("{:.0f} %", 100.0 * k.value("success_rate", 0.0)),
@@ -232,12 +239,6 @@ ReportSection sweep_section(const ReportFolder& f, const std::string& chart_id) 
   const std::string headline =
       fmt::format("traverse sweep, {} trials: success {}", text(f.doc["trials"]),
                   fmt::format("{}", fmt::join(successes, ", ")));
-  json ks = json::array();
-  json rates = json::array();
-  for (const json& k : f.doc["by_rocks"]) {
-    ks.push_back(k.value("rocks", 0.0));
-    rates.push_back(100.0 * k.value("success_rate", 0.0));
-  }
   const json chart = {
       {"type", "line"},
       {"data",
@@ -297,8 +298,7 @@ ReportSection fault_section(const ReportFolder& f, const std::string& chart_id) 
                           "wheels_commanded_while_failed", "emulated_s", "delay_s"})
     if (v.contains(key))
       rows.push_back({key, v[key].is_number_float() ? number(v[key], 3) : text(v[key])});
-  const bool traced = fs::is_regular_file(f.dir / "trace.json");
-  const std::string timeline = traced ? timeline_chart(f.dir / "trace.json", chart_id) : "";
+  const std::string timeline = folder_timeline(f.dir, chart_id);
   return {headline, heading(f) + html_table({"verdict", "value"}, rows) + timeline,
           !timeline.empty()};
 }

@@ -89,13 +89,6 @@ Timeline read_timeline(const json& events) {
   return t;
 }
 
-std::string script_json(const json& value) {
-  std::string text = value.dump();
-  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 2))
-    text.replace(at, 2, "<\\/");
-  return text;
-}
-
 } // namespace
 
 std::string timeline_chart(const std::filesystem::path& trace, const std::string& id) {

@@ -19,14 +19,7 @@ constexpr double kShortestNormalPath = 4.0;
 constexpr double kLongestNormalPath = 20.0;
 
 std::optional<std::pair<double, double>> normal_path_band(const std::string& text) {
-  const std::size_t dots = text.find("..");
-  if (dots == std::string::npos)
-    return std::nullopt;
-  const std::optional<double> near = io::parse_finite(text.substr(0, dots));
-  const std::optional<double> far = io::parse_finite(text.substr(dots + 2));
-  if (!near || !far || *near < kShortestNormalPath || *far > kLongestNormalPath || *far < *near)
-    return std::nullopt;
-  return std::pair{*near, *far};
+  return real_band(text, kShortestNormalPath, kLongestNormalPath);
 }
 
 } // namespace

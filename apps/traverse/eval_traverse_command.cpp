@@ -39,10 +39,7 @@ constexpr std::size_t kMaxRockCovers = 32;
 
 std::vector<double> rock_list(const std::string& text) {
   std::vector<double> list;
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', begin), text.size());
-    const std::string item = text.substr(begin, comma - begin);
+  for (const std::string& item : comma_items(text)) {
     const std::optional<double> k = io::parse_finite(item);
     if (!k || *k < 0.0 || *k > 0.5)
       throw UsageError(fmt::format("--rocks '{}': '{}' is not a rock cover from 0 to 0.5 (write a "
@@ -51,7 +48,6 @@ std::vector<double> rock_list(const std::string& text) {
     list.push_back(*k);
     if (list.size() > kMaxRockCovers)
       throw UsageError(fmt::format("--rocks '{}': at most {} covers", text, kMaxRockCovers));
-    begin = comma + 1;
   }
   return list;
 }

@@ -26,6 +26,9 @@ struct DecodedImage {
   int maxval = 0;
 };
 
+/// Whether the file's first bytes are `prefix` (its magic number).
+bool starts_with(std::span<const std::uint8_t> bytes, std::string_view prefix);
+
 /// Throws ImageError("<name>: <problem>").
 [[noreturn]] void fail(std::string_view name, std::string_view problem);
 

@@ -18,6 +18,13 @@ namespace fs = std::filesystem;
 
 } // namespace
 
+bool starts_with(std::span<const std::uint8_t> bytes, std::string_view prefix) {
+  return bytes.size() >= prefix.size() &&
+         std::equal(
+             prefix.begin(), prefix.end(), bytes.begin(),
+             [](char a, std::uint8_t b) { return static_cast<std::uint8_t>(a) == b; });
+}
+
 void fail(std::string_view name, std::string_view problem) {
   throw ImageError(fmt::format("{}: {}", name, problem));
 }

@@ -14,13 +14,7 @@ namespace {
 
 using detail::DecodedImage;
 using detail::fail;
-
-bool starts_with(std::span<const std::uint8_t> bytes, std::string_view prefix) {
-  return bytes.size() >= prefix.size() &&
-         std::equal(
-             prefix.begin(), prefix.end(), bytes.begin(),
-             [](char a, std::uint8_t b) { return static_cast<std::uint8_t>(a) == b; });
-}
+using detail::starts_with;
 
 // The content decides the format, never the name: a mislabelled file still reads correctly.
 DecodedImage decode_any(std::span<const std::uint8_t> bytes, std::string_view name) {

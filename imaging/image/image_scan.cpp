@@ -18,11 +18,6 @@ namespace {
 using detail::RasterLayout;
 using ScanVisitor = std::function<void(int, const ImageStrip&)>;
 
-bool starts_with(std::span<const std::uint8_t> bytes, char first, char second) {
-  return bytes.size() >= 2 && bytes[0] == static_cast<std::uint8_t>(first) &&
-         bytes[1] == static_cast<std::uint8_t>(second);
-}
-
 const char* format_name(detail::ImageFormat format) {
   switch (format) {
   case detail::ImageFormat::pgm:
@@ -133,9 +128,9 @@ ImageFileHeader scan_image(const std::filesystem::path& path, const ScanVisitor&
   std::vector<std::uint8_t> head;
   file.read_up_to(head, detail::kImageHeaderWindow);
   const bool cut = head.size() < file.size();
-  if (head.size() >= 4 && head[0] == 0x89 && head[1] == 'P' && head[2] == 'N' && head[3] == 'G')
+  if (detail::starts_with(head, "\x89PNG"))
     return scan_whole_png(head, file, visit);
-  if (starts_with(head, 'P', '5') || starts_with(head, 'P', '6')) {
+  if (detail::starts_with(head, "P5") || detail::starts_with(head, "P6")) {
     const RasterLayout layout = detail::pnm_layout(head, name, cut);
     RasterSource source(head, layout, file);
     if (layout.sample_bytes == 1)
@@ -144,7 +139,7 @@ ImageFileHeader scan_image(const std::filesystem::path& path, const ScanVisitor&
       scan_pnm<std::uint16_t>(source, layout, name, visit);
     return header_of(layout);
   }
-  if (starts_with(head, 'P', 'f') || starts_with(head, 'P', 'F')) {
+  if (detail::starts_with(head, "Pf") || detail::starts_with(head, "PF")) {
     const RasterLayout layout = detail::pfm_layout(head, name, cut);
     RasterSource source(head, layout, file);
     scan_pfm(source, layout, visit);

@@ -14,13 +14,14 @@ int steps_for(double amount, double step) {
 
 } // namespace
 
-std::vector<DrivePose> drive_poses(std::span<const DriveCommand> commands,
-                                   const DriveSweepOptions& options) {
+std::pmr::vector<DrivePose> drive_poses(std::span<const DriveCommand> commands,
+                                        const DriveSweepOptions& options,
+                                        std::pmr::memory_resource* memory) {
   if (!(options.step_m > 0.0) || !(options.turn_step_deg > 0.0) || !std::isfinite(options.step_m) ||
       !std::isfinite(options.turn_step_deg))
     throw std::invalid_argument("drive_poses: steps must be finite and positive");
   constexpr double kRadian = std::numbers::pi / 180.0;
-  std::vector<DrivePose> poses{DrivePose{}};
+  std::pmr::vector<DrivePose> poses(1, DrivePose{}, memory);
   imaging::PlanarPose at;
   double along = 0.0;
   for (std::size_t c = 0; c < commands.size(); ++c) {

@@ -3,10 +3,11 @@
 
 #include "work/work_report.hpp"
 
+#include "marsokhod/nav/path/drive_poses.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 
 namespace marsokhod::nav {
@@ -47,41 +48,6 @@ Extent extent_of(const TerrainRows& terrain, Meter& meter) {
     e.nearest = std::min(e.nearest, std::hypot(px, py));
   });
   return e;
-}
-
-// One pose of the rover on the way, and the command it belongs to.
-struct Pose {
-  imaging::PlanarPose at;
-  int command = 0;
-  bool turning = false;
-};
-
-// The poses of the drive: every half cell driving, every kFootprintTurnStepDeg turning.
-std::pmr::vector<Pose> poses_of(std::span<const DriveCommand> commands, double step_m,
-                                std::pmr::memory_resource* memory) {
-  std::pmr::vector<Pose> poses(memory);
-  imaging::PlanarPose at;
-  for (std::size_t c = 0; c < commands.size(); ++c) {
-    const int command = static_cast<int>(c);
-    const double turn = commands[c].turn_deg * std::numbers::pi / 180.0;
-    const int turn_steps =
-        static_cast<int>(std::ceil(std::abs(commands[c].turn_deg) / kFootprintTurnStepDeg));
-    for (int i = 1; i <= turn_steps; ++i)
-      poses.push_back({{at.x, at.y, at.heading_rad + turn * i / turn_steps}, command, true});
-    at.heading_rad += turn;
-    const double distance = commands[c].distance_m;
-    const int drive_steps = std::max(1, static_cast<int>(std::ceil(std::abs(distance) / step_m)));
-    for (int i = 0; i <= drive_steps; ++i) {
-      const double s = distance * i / drive_steps;
-      poses.push_back({{at.x + s * std::cos(at.heading_rad), at.y + s * std::sin(at.heading_rad),
-                        at.heading_rad},
-                       command,
-                       false});
-    }
-    at.x += distance * std::cos(at.heading_rad);
-    at.y += distance * std::sin(at.heading_rad);
-  }
-  return poses;
 }
 
 } // namespace
@@ -135,17 +101,17 @@ footprint_unseen(const SeenGround& seen, std::span<const DriveCommand> commands,
   const double known_within = seen.nearest_m() + seen.cell_m();
   const int along = static_cast<int>(std::ceil(chassis.length_m() / step));
   const int across = static_cast<int>(std::ceil(chassis.width_m() / step));
-  for (const Pose& pose : poses_of(commands, step, memory)) {
-    const double c = std::cos(pose.at.heading_rad);
-    const double s = std::sin(pose.at.heading_rad);
+  for (const DrivePose& pose : drive_poses(commands, {step, kFootprintTurnStepDeg}, memory)) {
+    const double c = std::cos(pose.pose.heading_rad);
+    const double s = std::sin(pose.pose.heading_rad);
     detail::report(meter, Work::footprint_test,
                    static_cast<std::uint64_t>((along + 1) * (across + 1)));
     for (int i = 0; i <= along; ++i)
       for (int j = 0; j <= across; ++j) {
         const double u = chassis.length_m() * (static_cast<double>(i) / along - 0.5);
         const double v = chassis.width_m() * (static_cast<double>(j) / across - 0.5);
-        const double x = pose.at.x + u * c - v * s;
-        const double y = pose.at.y + u * s + v * c;
+        const double x = pose.pose.x + u * c - v * s;
+        const double y = pose.pose.y + u * s + v * c;
         if (std::hypot(x, y) < known_within || seen.seen(x, y))
           continue;
         unseen.push_back(FootprintConflict{GroundPoint{x, y}, pose.command, pose.turning, true});

@@ -14,7 +14,7 @@ namespace {
 
 TEST(DrivePoses, TurnThenDriveEndsWhereTheCommandsLead) {
   const std::vector<DriveCommand> commands{{90.0, 1.0}};
-  const std::vector<DrivePose> poses = drive_poses(commands);
+  const std::pmr::vector<DrivePose> poses = drive_poses(commands);
   // The start, 45 turning poses of 2 degrees, 20 driving poses of 5 cm.
   ASSERT_EQ(poses.size(), 1u + 45u + 20u);
   EXPECT_TRUE(poses[45].turning);
@@ -30,7 +30,7 @@ TEST(DrivePoses, TurnThenDriveEndsWhereTheCommandsLead) {
 TEST(DrivePoses, LegsFollowEachOtherAndCountTheirIndex) {
   // Drive 2 m east, turn left 90 degrees, drive 1 m: the end is (2, 1).
   const std::vector<DriveCommand> commands{{0.0, 2.0}, {90.0, 1.0}};
-  const std::vector<DrivePose> poses = drive_poses(commands, {0.5, 30.0});
+  const std::pmr::vector<DrivePose> poses = drive_poses(commands, {0.5, 30.0});
   const DrivePose& last = poses.back();
   EXPECT_NEAR(last.pose.x, 2.0, 1e-12);
   EXPECT_NEAR(last.pose.y, 1.0, 1e-12);

@@ -4,6 +4,7 @@
 #include "marsokhod/imaging/rig/chassis.hpp"
 #include "marsokhod/nav/path/drive_commands.hpp"
 
+#include <memory_resource>
 #include <span>
 #include <vector>
 
@@ -26,8 +27,10 @@ struct DriveSweepOptions {
 
 /// Every pose from the start (the origin, heading 0) through each command: a turn on the spot
 /// sampled every turn_step_deg, then the straight drive every step_m, each command's last pose
-/// exact. Throws std::invalid_argument for non-positive steps or non-finite commands.
-std::vector<DrivePose> drive_poses(std::span<const DriveCommand> commands,
-                                   const DriveSweepOptions& options = {});
+/// exact; its memory from `memory`. Throws std::invalid_argument for non-positive steps or
+/// non-finite commands.
+std::pmr::vector<DrivePose>
+drive_poses(std::span<const DriveCommand> commands, const DriveSweepOptions& options = {},
+            std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 } // namespace marsokhod::nav
